@@ -1,0 +1,26 @@
+// The quadrature of the selective reduced integration (DESIGN §1.3): the
+// 2x2x2 Gauss points carry the weights, a ninth point at the cell centre has
+// weight zero. One FEValues object then yields the full gradients and the
+// centre gradients from which the hydrostatic part is taken
+// (reference Eqs. 17-18).
+#ifndef deepdraw_fe_selective_reduced_quadrature_h
+#define deepdraw_fe_selective_reduced_quadrature_h
+
+#include <deal.II/base/quadrature.h>
+
+namespace deepdraw
+{
+  namespace fe
+  {
+    using namespace dealii;
+
+    // Number of points that carry weight; the centre point follows them.
+    constexpr unsigned int n_weighted_points = 8;
+    constexpr unsigned int centre_point      = 8;
+
+    Quadrature<3>
+    selective_reduced_quadrature();
+  } // namespace fe
+} // namespace deepdraw
+
+#endif

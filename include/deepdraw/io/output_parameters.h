@@ -1,0 +1,29 @@
+// Where and how often results are written (subsection Output).
+#ifndef deepdraw_io_output_parameters_h
+#define deepdraw_io_output_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+
+namespace deepdraw
+{
+  namespace io
+  {
+    using namespace dealii;
+
+    struct OutputParameters
+    {
+      std::string output_directory = "output";
+      double      output_interval  = 0.;
+      bool        write_vtu        = true;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+  } // namespace io
+} // namespace deepdraw
+
+#endif

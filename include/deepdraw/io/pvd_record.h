@@ -1,0 +1,35 @@
+// The ParaView collection solution.pvd: one dataset per output step (time =
+// load parameter), each step possibly made of several VTU parts (the sheet,
+// the tools). Rewritten atomically after every output step.
+#ifndef deepdraw_io_pvd_record_h
+#define deepdraw_io_pvd_record_h
+
+#include <string>
+#include <vector>
+
+namespace deepdraw
+{
+  namespace io
+  {
+    class PvdRecord
+    {
+    public:
+      explicit PvdRecord(const std::string &filename);
+      // Adds the VTU files (names relative to the .pvd) of one output step.
+      void
+      add_step(double time, const std::vector<std::string> &parts);
+
+    private:
+      struct Entry
+      {
+        double      time;
+        unsigned    part;
+        std::string file;
+      };
+      std::string        filename;
+      std::vector<Entry> entries;
+    };
+  } // namespace io
+} // namespace deepdraw
+
+#endif

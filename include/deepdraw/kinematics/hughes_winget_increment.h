@@ -1,0 +1,51 @@
+// Incremental objective kinematics of one increment [t, t+dt] (DESIGN §1.1):
+// from the displacement-increment gradient H = grad_{x_t}(du) it computes the
+// mid-increment velocity gradient dL = H F_half^{-1} (F_half = I + H/2), the
+// strain increment d_eps = sym dL, the spin increment dW = skew dL and the
+// Hughes-Winget rotation Q = (I - dW/2)^{-1} (I + dW/2), plus the directional
+// derivative of all of them along a variation dH, which the consistent
+// tangent needs.
+#ifndef deepdraw_kinematics_hughes_winget_increment_h
+#define deepdraw_kinematics_hughes_winget_increment_h
+
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
+namespace deepdraw
+{
+  namespace kinematics
+  {
+    using namespace dealii;
+
+    class HughesWingetIncrement
+    {
+    public:
+      // Returns false if F = I + H is not invertible with det F > 0
+      // (an inverted element: the caller cuts the increment).
+      bool
+      reinit(const Tensor<2, 3> &displacement_increment_gradient);
+
+      // Variation of d_eps, dW and Q for a variation dH of H.
+      void
+      variation(const Tensor<2, 3> &dH,
+                Tensor<2, 3>       &d_strain_increment,
+                Tensor<2, 3>       &d_spin_increment,
+                Tensor<2, 3>       &d_rotation) const;
+
+      Tensor<2, 3>          H;
+      Tensor<2, 3>          deformation_gradient; // F = I + H
+      Tensor<2, 3>          inverse_deformation_gradient;
+      double                jacobian = 1.;
+      Tensor<2, 3>          velocity_gradient_increment; // dL
+      SymmetricTensor<2, 3> strain_increment;            // sym dL
+      Tensor<2, 3>          spin_increment;              // skew dL
+      Tensor<2, 3>          rotation;                    // Q
+
+    private:
+      Tensor<2, 3> inverse_half_deformation_gradient; // F_half^{-1}
+      Tensor<2, 3> inverse_a;                         // (I - dW/2)^{-1}
+    };
+  } // namespace kinematics
+} // namespace deepdraw
+
+#endif

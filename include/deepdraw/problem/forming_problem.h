@@ -1,0 +1,222 @@
+// The forming problem: owns the blank's mesh, the degrees of freedom, the
+// quadrature-point history, and drives the increments (DESIGN §1, §3).
+//
+// Unknowns are ordered in blocks: displacements first, then (once the
+// contact issue lands) the contact forces and the tool positions, all in one
+// unsymmetric system solved by a direct solver.
+#ifndef deepdraw_problem_forming_problem_h
+#define deepdraw_problem_forming_problem_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/tensor.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+
+#include <deal.II/grid/tria.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+
+#include <deepdraw/io/csv_file.h>
+#include <deepdraw/io/output_parameters.h>
+#include <deepdraw/io/pvd_record.h>
+#include <deepdraw/material/hill_plasticity.h>
+#include <deepdraw/material/material_parameters.h>
+#include <deepdraw/problem/blank_geometry.h>
+#include <deepdraw/problem/prescribed_displacements.h>
+#include <deepdraw/problem/quadrature_point_update.h>
+#include <deepdraw/solver/increment_control.h>
+#include <deepdraw/solver/linear_solver.h>
+#include <deepdraw/solver/newton_parameters.h>
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace deepdraw
+{
+  namespace problem
+  {
+    using namespace dealii;
+
+    // Thrown when the run cannot continue; the message says why.
+    class RunFailure : public std::runtime_error
+    {
+    public:
+      using std::runtime_error::runtime_error;
+    };
+
+    class FormingProblem
+    {
+    public:
+      static void
+      declare_parameters(ParameterHandler &prm);
+
+      // Parses and checks all parameters (throws InputError); writes nothing.
+      explicit FormingProblem(ParameterHandler &prm);
+
+      // Runs all increments, writing results as they converge. Throws
+      // RunFailure if an increment cannot be completed; what was written
+      // until then stays valid.
+      void
+      run();
+
+      // Residual r(du) = f_int(du) over all displacement dofs and, if
+      // tangent != nullptr, dr/d(du), for the displacement increment du
+      // measured from the current configuration and committed history (no
+      // constraints applied). Used by the tangent verification test.
+      bool
+      evaluate_residual(const Vector<double> &displacement_increment,
+                        Vector<double>       &residual,
+                        FullMatrix<double>   *tangent);
+
+      const DoFHandler<3> &
+      get_dof_handler() const;
+      const Vector<double> &
+      get_total_displacement() const;
+      // Initial position of every vertex.
+      const std::vector<Point<3>> &
+      get_initial_vertices() const;
+      // Cauchy stress averaged over each cell, by active cell index.
+      std::vector<Tensor<2, 3>>
+      cell_average_cauchy_stress() const;
+      const std::vector<QuadraturePointHistory> &
+      get_history() const;
+      // Sum of the internal forces over the dofs of a face (reaction).
+      Tensor<1, 3>
+      face_reaction(unsigned int boundary_id) const;
+      // Current thickness of each through-thickness column.
+      const std::vector<double> &
+      get_column_thickness() const;
+      // For every vertex, the index of its column.
+      const std::vector<unsigned int> &
+      get_vertex_column() const;
+
+      // Newton history of the last increment: relative force residuals.
+      const std::vector<double> &
+      last_residuals() const;
+
+    private:
+      struct CellGeometry
+      {
+        // Gradients wrt x_t of the 8 scalar shape functions at the 8 Gauss
+        // points, and at the cell centre; JxW of the Gauss points.
+        std::array<Tensor<1, 3>, 64> gradient;
+        std::array<Tensor<1, 3>, 8>  centre_gradient;
+        std::array<double, 8>        JxW;
+      };
+
+      enum class IncrementOutcome
+      {
+        converged,
+        too_many_iterations,
+        diverged,
+        not_a_number,
+        inverted_element,
+        return_mapping_failed,
+        linear_solver_failed
+      };
+      static std::string
+      describe(IncrementOutcome outcome);
+
+      void
+      setup_system();
+      void
+      update_cell_geometry();
+      void
+      set_up_prescribed_increment(double old_load, double new_load);
+      // Assembles f_int, the residual (rhs = -r on free dofs) and, if
+      // requested, the tangent; trial history from du.
+      IncrementOutcome
+      assemble(const Vector<double>        &displacement_increment,
+               const AffineConstraints<double> &constraints,
+               bool                         assemble_matrix);
+      IncrementOutcome
+      solve_increment(double old_load, double new_load, unsigned int &iterations);
+      void
+      commit_increment();
+      void
+      compute_thickness();
+      void
+      open_output_files();
+      void
+      write_vtu(double load);
+      void
+      write_increment_tables(double load);
+
+      // Parameters
+      BlankGeometry                         geometry;
+      material::MaterialParameters          material_parameters;
+      PrescribedDisplacements               prescribed;
+      solver::IncrementControlParameters    increment_parameters;
+      solver::NewtonParameters              newton_parameters;
+      solver::LinearSolverParameters        linear_solver_parameters;
+      io::OutputParameters                  output_parameters;
+      bool                                  selective_reduced_integration = true;
+
+      std::unique_ptr<material::HillPlasticity> material;
+
+      // Discretisation
+      Triangulation<3>          triangulation;
+      std::vector<Point<3>>     initial_vertices;
+      std::vector<unsigned int> vertex_column;
+      std::vector<unsigned int> vertex_layer;
+      FESystem<3>               fe;
+      DoFHandler<3>             dof_handler;
+      FE_Q<3>                   fe_scalar;
+      DoFHandler<3>             scalar_dof_handler;
+      // local dof i of a cell = component local_component[i] of node local_node[i]
+      std::array<unsigned int, 24> local_component;
+      std::array<unsigned int, 24> local_node;
+      std::vector<std::array<types::global_dof_index, 3>> vertex_dofs;
+      std::vector<Point<3>>        dof_initial_position;
+      std::vector<unsigned int>    dof_component;
+      std::vector<CellGeometry>    cell_geometry;
+      std::array<std::vector<types::global_dof_index>, 6> face_dofs;
+
+      // Constrained dofs with their prescribed displacement entry.
+      std::vector<std::pair<types::global_dof_index, const PrescribedDisplacement *>>
+                                prescribed_dofs;
+      AffineConstraints<double> homogeneous_constraints;
+      AffineConstraints<double> predictor_constraints;
+
+      SparsityPattern      sparsity_pattern;
+      SparseMatrix<double> system_matrix;
+      Vector<double>       system_rhs;
+      Vector<double>       internal_force;
+      Vector<double>       total_displacement;
+      Vector<double>       displacement_increment;
+
+      std::vector<QuadraturePointHistory> history;
+      std::vector<QuadraturePointHistory> trial_history;
+
+      std::unique_ptr<solver::LinearSolver> linear_solver;
+
+      // Results
+      std::vector<double> column_thickness;
+      std::vector<double> residual_history;
+      unsigned int        n_plastic_points = 0;
+
+      // Timers of the current increment (seconds)
+      double assembly_time = 0.;
+      double solve_time    = 0.;
+
+      // Output
+      std::unique_ptr<io::PvdRecord> pvd;
+      io::CsvFile                    statistics_file;
+      io::CsvFile                    newton_file;
+      io::CsvFile                    reactions_file;
+      std::vector<unsigned int>      reaction_faces;
+      unsigned int                   output_step = 0;
+      unsigned int                   increment_number = 0;
+    };
+  } // namespace problem
+} // namespace deepdraw
+
+#endif

@@ -1,0 +1,67 @@
+// Load stepping with cut-back and regrowth (DESIGN §1.6): proposes the next
+// increment of the load parameter, lands exactly on requested loads (output
+// points, the end), halves after a divergence and grows after easy increments.
+#ifndef deepdraw_solver_increment_control_h
+#define deepdraw_solver_increment_control_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <vector>
+
+namespace deepdraw
+{
+  namespace solver
+  {
+    using namespace dealii;
+
+    struct IncrementControlParameters
+    {
+      double       final_load            = 1.;
+      double       initial_increment     = 0.1;
+      double       minimum_increment     = 1e-6;
+      double       maximum_increment     = 0.1;
+      double       cut_back_factor       = 0.5;
+      double       growth_factor         = 1.5;
+      unsigned int easy_iterations       = 4;
+      unsigned int maximum_cut_backs     = 12;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    class IncrementControl
+    {
+    public:
+      IncrementControl(const IncrementControlParameters &parameters,
+                       const std::vector<double>        &landing_loads);
+
+      bool
+      finished() const;
+      double
+      current_load() const;
+      // Size of the next attempt, clipped to land on the next landing load.
+      double
+      next_increment() const;
+      // After a converged increment of the size next_increment() returned.
+      void
+      accept(unsigned int newton_iterations);
+      // After a failed attempt; returns false if the increment would fall
+      // below the minimum or the cut-backs of one increment are exhausted.
+      bool
+      cut_back();
+      unsigned int
+      cut_backs_of_current_increment() const;
+
+    private:
+      IncrementControlParameters parameters;
+      std::vector<double>        landing_loads;
+      double                     load;
+      double                     increment;
+      unsigned int               cut_backs = 0;
+    };
+  } // namespace solver
+} // namespace deepdraw
+
+#endif

@@ -1,0 +1,50 @@
+// Direct solution of the (unsymmetric) Newton system: UMFPACK through
+// deal.II, or MUMPS / KLU through Trilinos Amesos (DESIGN §1.4).
+#ifndef deepdraw_solver_linear_solver_h
+#define deepdraw_solver_linear_solver_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <memory>
+#include <string>
+
+namespace deepdraw
+{
+  namespace solver
+  {
+    using namespace dealii;
+
+    struct LinearSolverParameters
+    {
+      std::string type = "UMFPACK";
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    class LinearSolver
+    {
+    public:
+      explicit LinearSolver(const LinearSolverParameters &parameters);
+      ~LinearSolver();
+      // Solves matrix * solution = rhs. Throws std::runtime_error if the
+      // factorisation fails (e.g. a singular matrix: missing supports).
+      void
+      solve(const SparseMatrix<double> &matrix,
+            const Vector<double>       &rhs,
+            Vector<double>             &solution);
+
+    private:
+      struct Implementation;
+      LinearSolverParameters          parameters;
+      std::unique_ptr<Implementation> implementation;
+    };
+  } // namespace solver
+} // namespace deepdraw
+
+#endif

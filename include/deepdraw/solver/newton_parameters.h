@@ -1,0 +1,30 @@
+// Controls of the global Newton-Raphson loop (DESIGN §1.6).
+#ifndef deepdraw_solver_newton_parameters_h
+#define deepdraw_solver_newton_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+
+namespace deepdraw
+{
+  namespace solver
+  {
+    using namespace dealii;
+
+    struct NewtonParameters
+    {
+      unsigned int maximum_iterations   = 15;
+      double       force_tolerance      = 1e-6;
+      double       correction_tolerance = 1e-6;
+      // Residual growth over the smallest residual seen in the increment
+      // that counts as divergence.
+      double       divergence_ratio     = 1e4;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+  } // namespace solver
+} // namespace deepdraw
+
+#endif

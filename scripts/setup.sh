@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Installs what deepdraw needs on Debian 12 (only the missing packages), then
+# configures and builds it in Release in ./build. Idempotent, no prompts.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(libdeal.ii-dev cmake g++ make numdiff ccache python3 gnuplot-nox)
+missing=()
+for package in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" \
+    || missing+=("$package")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}"
+  sudo_cmd=()
+  [ "$(id -u)" -ne 0 ] && sudo_cmd=(sudo)
+  "${sudo_cmd[@]}" apt-get update -q
+  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
+fi
+
+jobs=$(nproc)
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release > build.log.tmp 2>&1 || { cat build.log.tmp; rm -f build.log.tmp; exit 1; }
+rm -f build.log.tmp
+cmake --build build -j "$jobs"

@@ -1,0 +1,218 @@
+// Results of FormingProblem: geometric thickness, VTU/PVD, CSV tables.
+#include <deal.II/numerics/data_out.h>
+
+#include <deepdraw/fe/selective_reduced_quadrature.h>
+#include <deepdraw/problem/forming_problem.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace deepdraw
+{
+  namespace problem
+  {
+    void
+    FormingProblem::compute_thickness()
+    {
+      // Thickness measured as a real distance (DESIGN §2): for every
+      // through-thickness column, (x_top - x_bottom) . n with n the sheet
+      // normal, the average of the outward normals of the top faces minus
+      // those of the bottom faces around the column.
+      const unsigned int n_columns =
+        (geometry.elements_along_x + 1) * (geometry.elements_along_y + 1);
+      std::vector<Tensor<1, 3>> normal(n_columns);
+      std::vector<Point<3>>     top(n_columns), bottom(n_columns);
+      const auto               &vertices = triangulation.get_vertices();
+      for (unsigned int v = 0; v < vertices.size(); ++v)
+        {
+          if (vertex_layer[v] == 0)
+            bottom[vertex_column[v]] = vertices[v];
+          if (vertex_layer[v] == geometry.layers_through_thickness)
+            top[vertex_column[v]] = vertices[v];
+        }
+      for (const auto &cell : triangulation.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary()
+              && (face->boundary_id() == 4 || face->boundary_id() == 5))
+            {
+              Tensor<1, 3> n = cross_product_3d(face->vertex(3) - face->vertex(0),
+                                                face->vertex(2) - face->vertex(1));
+              if (n * (face->center() - cell->center()) < 0.)
+                n = -n;
+              n /= n.norm();
+              const double sign = face->boundary_id() == 5 ? 1. : -1.;
+              for (const unsigned int v : face->vertex_indices())
+                normal[vertex_column[face->vertex_index(v)]] += sign * n;
+            }
+      column_thickness.resize(n_columns);
+      for (unsigned int c = 0; c < n_columns; ++c)
+        column_thickness[c] =
+          std::abs((top[c] - bottom[c]) * normal[c]) / normal[c].norm();
+    }
+
+
+
+    std::vector<Tensor<2, 3>>
+    FormingProblem::cell_average_cauchy_stress() const
+    {
+      std::vector<Tensor<2, 3>> stress(triangulation.n_active_cells());
+      for (unsigned int cell = 0; cell < stress.size(); ++cell)
+        for (unsigned int q = 0; q < fe::n_weighted_points; ++q)
+          stress[cell] +=
+            cauchy_stress(history[cell * fe::n_weighted_points + q])
+            / double(fe::n_weighted_points);
+      return stress;
+    }
+
+
+
+    void
+    FormingProblem::open_output_files()
+    {
+      const std::string &directory = output_parameters.output_directory;
+      std::filesystem::create_directories(directory);
+      pvd = std::make_unique<io::PvdRecord>(directory + "/solution.pvd");
+      statistics_file.open(directory + "/statistics.csv",
+                           {"increment",
+                            "load",
+                            "load_increment",
+                            "newton_iterations",
+                            "cut_backs",
+                            "force_residual",
+                            "plastic_points",
+                            "assembly_s",
+                            "linear_solve_s",
+                            "output_s",
+                            "wall_s"});
+      newton_file.open(directory + "/newton.csv",
+                       {"increment",
+                        "load",
+                        "iteration",
+                        "force_residual",
+                        "correction"});
+      std::vector<std::string> columns = {"load"};
+      for (const unsigned int face : reaction_faces)
+        for (const char *component : {"_Fx", "_Fy", "_Fz"})
+          columns.push_back(face_names[face] + component);
+      reactions_file.open(directory + "/reactions.csv", columns);
+      write_increment_tables(0.);
+    }
+
+
+
+    void
+    FormingProblem::write_increment_tables(const double load)
+    {
+      std::vector<double> row = {load};
+      for (const unsigned int face : reaction_faces)
+        {
+          const Tensor<1, 3> reaction = face_reaction(face);
+          for (unsigned int c = 0; c < 3; ++c)
+            row.push_back(reaction[c]);
+        }
+      reactions_file.add_row(row);
+    }
+
+
+
+    void
+    FormingProblem::write_vtu(const double load)
+    {
+      if (!output_parameters.write_vtu)
+        return;
+
+      const unsigned int n_cells = triangulation.n_active_cells();
+      const unsigned int n_q     = fe::n_weighted_points;
+      const char        *axes[]  = {"x", "y", "z"};
+
+      // Cell averages of the quadrature-point fields.
+      std::vector<Vector<double>> stress(6, Vector<double>(n_cells));
+      std::vector<Vector<double>> back_stress(6, Vector<double>(n_cells));
+      std::vector<Vector<double>> rolling_direction(3, Vector<double>(n_cells));
+      Vector<double> equivalent_stress(n_cells), plastic_strain(n_cells);
+      const unsigned int pairs[6][2] = {
+        {0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {0, 2}};
+      for (unsigned int cell = 0; cell < n_cells; ++cell)
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            const QuadraturePointHistory &point = history[cell * n_q + q];
+            const Tensor<2, 3> sigma = cauchy_stress(point);
+            const Tensor<2, 3> &R    = point.material_axes;
+            const Tensor<2, 3>  X =
+              R * Tensor<2, 3>(point.state.back_stress) * transpose(R);
+            for (unsigned int p = 0; p < 6; ++p)
+              {
+                stress[p][cell] += sigma[pairs[p][0]][pairs[p][1]] / n_q;
+                back_stress[p][cell] += X[pairs[p][0]][pairs[p][1]] / n_q;
+              }
+            for (unsigned int d = 0; d < 3; ++d)
+              rolling_direction[d][cell] += R[d][0] / n_q;
+            equivalent_stress[cell] +=
+              material->equivalent_stress(point.state.stress
+                                          - point.state.back_stress)
+              / n_q;
+            plastic_strain[cell] += point.state.equivalent_plastic_strain / n_q;
+          }
+
+      // Thickness strain ln(t/t0) at every vertex of a column.
+      Vector<double> thickness_strain(scalar_dof_handler.n_dofs());
+      for (const auto &cell : scalar_dof_handler.active_cell_iterators())
+        for (const unsigned int v : cell->vertex_indices())
+          thickness_strain[cell->vertex_dof_index(v, 0)] = std::log(
+            column_thickness[vertex_column[cell->vertex_index(v)]]
+            / geometry.thickness);
+
+      DataOut<3> data_out;
+      data_out.attach_triangulation(triangulation);
+      std::vector<std::string> names(3, "displacement");
+      std::vector<DataComponentInterpretation::DataComponentInterpretation>
+        interpretation(3,
+                       DataComponentInterpretation::component_is_part_of_vector);
+      data_out.add_data_vector(dof_handler,
+                               total_displacement,
+                               names,
+                               interpretation);
+      data_out.add_data_vector(scalar_dof_handler,
+                               thickness_strain,
+                               "thickness_strain");
+      for (unsigned int p = 0; p < 6; ++p)
+        {
+          const std::string suffix =
+            std::string(axes[pairs[p][0]]) + axes[pairs[p][1]];
+          data_out.add_data_vector(stress[p],
+                                   "stress_" + suffix,
+                                   DataOut<3>::type_cell_data);
+          data_out.add_data_vector(back_stress[p],
+                                   "back_stress_" + suffix,
+                                   DataOut<3>::type_cell_data);
+        }
+      for (unsigned int d = 0; d < 3; ++d)
+        data_out.add_data_vector(rolling_direction[d],
+                                 std::string("rolling_direction_") + axes[d],
+                                 DataOut<3>::type_cell_data);
+      data_out.add_data_vector(equivalent_stress,
+                               "equivalent_stress",
+                               DataOut<3>::type_cell_data);
+      data_out.add_data_vector(plastic_strain,
+                               "equivalent_plastic_strain",
+                               DataOut<3>::type_cell_data);
+      data_out.build_patches();
+
+      std::ostringstream name;
+      name << "solution-" << std::setw(5) << std::setfill('0') << output_step
+           << ".vtu";
+      const std::string path =
+        output_parameters.output_directory + "/" + name.str();
+      {
+        std::ofstream out(path + ".tmp");
+        data_out.write_vtu(out);
+      }
+      std::filesystem::rename(path + ".tmp", path);
+      pvd->add_step(load, {name.str()});
+      ++output_step;
+    }
+  } // namespace problem
+} // namespace deepdraw

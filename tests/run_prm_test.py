@@ -1,0 +1,83 @@
+#!/usr/bin/env python3
+"""Runs one prm-driven test (see tests/CMakeLists.txt for the conventions).
+
+The prm file is run with deepdraw in a fresh work directory; its
+'Output directory' is overridden to <work-dir>/output so tests never write
+into the source tree. Then, in this order and if present next to the prm:
+  <name>.expected_error  the run must fail (non-zero exit), its output must
+                         contain every non-empty line of this file, and the
+                         output directory must not have been created;
+  <name>.check.py        called as: python3 check.py <output-dir>; it asserts
+                         the physics and exits non-zero on failure;
+  <name>.reference/      every file in it is compared with the output file of
+                         the same name by numdiff, with the tolerances given
+                         in <name>.reference/NUMDIFF (one line of options).
+"""
+import argparse
+import os
+import pathlib
+import shutil
+import subprocess
+import sys
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--deepdraw", required=True)
+    parser.add_argument("--prm", required=True)
+    parser.add_argument("--work-dir", required=True)
+    args = parser.parse_args()
+
+    prm = pathlib.Path(args.prm)
+    stem = prm.with_suffix("")
+    work = pathlib.Path(args.work_dir)
+    if work.exists():
+        shutil.rmtree(work)
+    work.mkdir(parents=True)
+    output = work / "output"
+
+    command = [args.deepdraw, str(prm), "--output-directory", str(output)]
+    print("running:", " ".join(command), flush=True)
+    run = subprocess.run(command, cwd=work, stdout=subprocess.PIPE,
+                         stderr=subprocess.STDOUT, text=True)
+    print(run.stdout)
+
+    expected_error = pathlib.Path(str(stem) + ".expected_error")
+    if expected_error.exists():
+        if run.returncode == 0:
+            sys.exit("FAILED: the run succeeded but was expected to fail")
+        for line in expected_error.read_text().splitlines():
+            if line.strip() and line.strip() not in run.stdout:
+                sys.exit("FAILED: the message does not contain: " + line)
+        if output.exists():
+            sys.exit("FAILED: a rejected input still created " + str(output))
+        print("PASSED: the run failed with the expected message")
+        return
+
+    if run.returncode != 0:
+        sys.exit("FAILED: deepdraw exited with code %d" % run.returncode)
+
+    check = pathlib.Path(str(stem) + ".check.py")
+    if check.exists():
+        result = subprocess.run([sys.executable, str(check), str(output)])
+        if result.returncode != 0:
+            sys.exit("FAILED: " + check.name)
+
+    reference = pathlib.Path(str(stem) + ".reference")
+    if reference.is_dir():
+        options_file = reference / "NUMDIFF"
+        options = options_file.read_text().split() if options_file.exists() else []
+        for expected in sorted(reference.iterdir()):
+            if expected.name == "NUMDIFF":
+                continue
+            result = subprocess.run(["numdiff", "-q"] + options +
+                                    [str(expected), str(output / expected.name)])
+            if result.returncode != 0:
+                subprocess.run(["numdiff"] + options +
+                               [str(expected), str(output / expected.name)])
+                sys.exit("FAILED: numdiff " + expected.name)
+    print("PASSED")
+
+
+if __name__ == "__main__":
+    main()
