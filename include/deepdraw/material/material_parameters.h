@@ -1,0 +1,53 @@
+// Parameters of the sheet material (DESIGN §1.2): isotropic elasticity,
+// Hill'48 anisotropy, Swift isotropic and Prager kinematic hardening.
+// Defaults: NUMISHEET'93 aluminium (DESIGN §5). Units: MPa.
+#ifndef deepdraw_material_material_parameters_h
+#define deepdraw_material_material_parameters_h
+
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+namespace deepdraw
+{
+  namespace material
+  {
+    struct MaterialParameters
+    {
+      double youngs_modulus = 71000.; // E, MPa
+      double poissons_ratio = 0.33;   // nu
+
+      // Hill'48 coefficients in the orthotropy frame (1 = rolling,
+      // 2 = transverse, 3 = normal); von Mises: F = G = H = 1/2, L = M = N =
+      // 3/2.
+      double hill_F = 0.5932, hill_G = 0.5848, hill_H = 0.4152;
+      double hill_L = 1.272, hill_M = 1.272, hill_N = 1.272;
+
+      // Swift law Y = C (eps0 + epbar)^n, MPa.
+      double swift_coefficient = 576.79, swift_prestrain = 0.01658,
+             swift_exponent = 0.3593;
+
+      // Prager linear kinematic hardening dX = k d(eps^p), MPa; 0 = off.
+      double prager_modulus = 0.;
+
+      // Declares the entries inside the *current* subsection (the caller
+      // enters "Material").
+      static void
+      declare_parameters(dealii::ParameterHandler &prm);
+
+      // Reads the entries from the current subsection, then validate().
+      void
+      parse_parameters(dealii::ParameterHandler &prm);
+
+      // Checks what a Pattern cannot (E > 0, -1 < nu < 1/2, C > 0, eps0 > 0,
+      // 0 <= n < 1, F, G, H >= 0 with pairwise sums > 0, L, M, N > 0).
+      // Throws deepdraw::InputError naming the parameter ("Material/Hill G")
+      // and the allowed values.
+      void
+      validate() const;
+    };
+  } // namespace material
+} // namespace deepdraw
+
+#endif

@@ -1,0 +1,176 @@
+#include <cmath>
+#include <deal.II/base/parameter_handler.h>
+#include <deepdraw/io/input_error.h>
+#include <deepdraw/material/material_parameters.h>
+#include <sstream>
+#include <string>
+
+namespace deepdraw
+{
+  namespace material
+  {
+    namespace
+    {
+      // Defaults in the prm come from the struct initialisers, so the two
+      // cannot diverge.
+      std::string
+      to_string(const double value)
+      {
+        std::ostringstream s;
+        s.precision(12);
+        s << value;
+        return s.str();
+      }
+
+      std::string
+      name(const std::string &entry)
+      {
+        return "Material/" + entry;
+      }
+
+      void
+      require(const bool         condition,
+              const std::string &entry,
+              const double       value,
+              const std::string &allowed)
+      {
+        if (!condition)
+          throw InputError("Invalid value " + to_string(value) + " of "
+                           + name(entry) + ": allowed values are " + allowed
+                           + ".");
+      }
+    } // namespace
+
+
+    void
+    MaterialParameters::declare_parameters(dealii::ParameterHandler &prm)
+    {
+      using dealii::Patterns::Double;
+      const MaterialParameters d;
+      const double             inf = Double::max_double_value;
+
+      prm.declare_entry("Young's modulus",
+                        to_string(d.youngs_modulus),
+                        Double(0., inf),
+                        "Young's modulus E of the sheet, in MPa (> 0).");
+      prm.declare_entry("Poisson's ratio",
+                        to_string(d.poissons_ratio),
+                        Double(-1., 0.5),
+                        "Poisson's ratio nu, dimensionless (-1 < nu < 0.5).");
+      const char  *normal[3]         = {"F", "G", "H"};
+      const double normal_default[3] = {d.hill_F, d.hill_G, d.hill_H};
+      for (unsigned int i = 0; i < 3; ++i)
+        prm.declare_entry(std::string("Hill ") + normal[i],
+                          to_string(normal_default[i]),
+                          Double(0., inf),
+                          std::string("Hill'48 coefficient ") + normal[i]
+                            + ", dimensionless (>= 0; F + G, G + H, F + H > "
+                              "0). Axes: 1 = rolling, 2 = transverse, 3 = "
+                              "normal. Von Mises: F = G = H = 0.5.");
+      const char  *shear[3]         = {"L", "M", "N"};
+      const char  *plane[3]         = {"23", "31", "12"};
+      const double shear_default[3] = {d.hill_L, d.hill_M, d.hill_N};
+      for (unsigned int i = 0; i < 3; ++i)
+        prm.declare_entry(std::string("Hill ") + shear[i],
+                          to_string(shear_default[i]),
+                          Double(0., inf),
+                          std::string("Hill'48 shear coefficient ") + shear[i]
+                            + " (plane " + plane[i]
+                            + "), dimensionless (> 0). Von Mises: 1.5.");
+      prm.declare_entry("Swift coefficient",
+                        to_string(d.swift_coefficient),
+                        Double(0., inf),
+                        "C of the Swift law Y = C (eps0 + epbar)^n, in MPa "
+                        "(> 0).");
+      prm.declare_entry("Swift prestrain",
+                        to_string(d.swift_prestrain),
+                        Double(0., inf),
+                        "eps0 of the Swift law, dimensionless (> 0, so that "
+                        "the initial yield stress C eps0^n is positive).");
+      prm.declare_entry("Swift exponent",
+                        to_string(d.swift_exponent),
+                        Double(0., 1.),
+                        "n of the Swift law, dimensionless (0 <= n < 1; 0 = "
+                        "perfectly plastic).");
+      prm.declare_entry("Prager modulus",
+                        to_string(d.prager_modulus),
+                        Double(0., inf),
+                        "k of the Prager kinematic hardening dX = k "
+                        "d(eps^p), in MPa (>= 0; 0 switches it off).");
+    }
+
+
+    void
+    MaterialParameters::parse_parameters(dealii::ParameterHandler &prm)
+    {
+      youngs_modulus    = prm.get_double("Young's modulus");
+      poissons_ratio    = prm.get_double("Poisson's ratio");
+      hill_F            = prm.get_double("Hill F");
+      hill_G            = prm.get_double("Hill G");
+      hill_H            = prm.get_double("Hill H");
+      hill_L            = prm.get_double("Hill L");
+      hill_M            = prm.get_double("Hill M");
+      hill_N            = prm.get_double("Hill N");
+      swift_coefficient = prm.get_double("Swift coefficient");
+      swift_prestrain   = prm.get_double("Swift prestrain");
+      swift_exponent    = prm.get_double("Swift exponent");
+      prager_modulus    = prm.get_double("Prager modulus");
+      validate();
+    }
+
+
+    void
+    MaterialParameters::validate() const
+    {
+      // Written as !(a < b) etc. where needed so that NaN is rejected too.
+      require(youngs_modulus > 0. && std::isfinite(youngs_modulus),
+              "Young's modulus",
+              youngs_modulus,
+              "E > 0 (MPa)");
+      require(poissons_ratio > -1. && poissons_ratio < 0.5,
+              "Poisson's ratio",
+              poissons_ratio,
+              "-1 < nu < 0.5 (0.5 is incompressible, not supported)");
+      require(hill_F >= 0., "Hill F", hill_F, ">= 0");
+      require(hill_G >= 0., "Hill G", hill_G, ">= 0");
+      require(hill_H >= 0., "Hill H", hill_H, ">= 0");
+      // Pairwise sums > 0 make M positive definite on deviators, so the
+      // yield surface is bounded (DESIGN §1.2).
+      require(hill_G + hill_H > 0.,
+              "Hill G",
+              hill_G,
+              "such that Material/Hill G + Material/Hill H > 0 (Hill H = "
+                + to_string(hill_H) + ")");
+      require(hill_F + hill_H > 0.,
+              "Hill F",
+              hill_F,
+              "such that Material/Hill F + Material/Hill H > 0 (Hill H = "
+                + to_string(hill_H) + ")");
+      require(hill_F + hill_G > 0.,
+              "Hill F",
+              hill_F,
+              "such that Material/Hill F + Material/Hill G > 0 (Hill G = "
+                + to_string(hill_G) + ")");
+      require(hill_L > 0., "Hill L", hill_L, "> 0");
+      require(hill_M > 0., "Hill M", hill_M, "> 0");
+      require(hill_N > 0., "Hill N", hill_N, "> 0");
+      require(swift_coefficient > 0. && std::isfinite(swift_coefficient),
+              "Swift coefficient",
+              swift_coefficient,
+              "C > 0 (MPa)");
+      require(swift_prestrain > 0. && std::isfinite(swift_prestrain),
+              "Swift prestrain",
+              swift_prestrain,
+              "eps0 > 0 (the initial yield stress C eps0^n must be finite "
+              "and positive)");
+      require(swift_exponent >= 0. && swift_exponent < 1.,
+              "Swift exponent",
+              swift_exponent,
+              "0 <= n < 1");
+      require(prager_modulus >= 0. && std::isfinite(prager_modulus),
+              "Prager modulus",
+              prager_modulus,
+              "k >= 0 (MPa)");
+    }
+  } // namespace material
+} // namespace deepdraw

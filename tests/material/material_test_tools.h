@@ -1,0 +1,290 @@
+// Helpers shared by the material-point tests: Kelvin (Mandel) 6-vectors,
+// a small dense solver, and a uniaxial tension/compression driver in an
+// arbitrary direction of the sheet plane (mixed strain/stress control or
+// pure stress control), Newton on the strain increment with the tangent of
+// HillPlasticity.
+#ifndef deepdraw_tests_material_test_tools_h
+#define deepdraw_tests_material_test_tools_h
+
+#include <array>
+#include <cmath>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+#include <deepdraw/material/hill_plasticity.h>
+#include <stdexcept>
+#include <utility>
+
+namespace material_test
+{
+  using namespace dealii;
+  using deepdraw::material::HillPlasticity;
+  using deepdraw::material::MaterialParameters;
+  using deepdraw::material::MaterialPointState;
+
+  using Vector6 = std::array<double, 6>;
+  using Matrix6 = std::array<Vector6, 6>;
+
+  // Kelvin components in deal.II's order (11, 22, 33, 12, 13, 23).
+  inline const std::array<std::pair<unsigned int, unsigned int>, 6> &
+  kelvin_indices()
+  {
+    static const std::array<std::pair<unsigned int, unsigned int>, 6> ij
+      = {{{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}}};
+    return ij;
+  }
+
+  inline double
+  kelvin_weight(const unsigned int I)
+  {
+    return I < 3 ? 1. : std::sqrt(2.);
+  }
+
+  inline Vector6
+  to_kelvin(const SymmetricTensor<2, 3> &t)
+  {
+    Vector6 v;
+    for (unsigned int I = 0; I < 6; ++I)
+      v[I] = kelvin_weight(I)
+             * t[kelvin_indices()[I].first][kelvin_indices()[I].second];
+    return v;
+  }
+
+  inline SymmetricTensor<2, 3>
+  from_kelvin(const Vector6 &v)
+  {
+    SymmetricTensor<2, 3> t;
+    for (unsigned int I = 0; I < 6; ++I)
+      t[kelvin_indices()[I].first][kelvin_indices()[I].second]
+        = v[I] / kelvin_weight(I);
+    return t;
+  }
+
+  inline Matrix6
+  to_kelvin(const SymmetricTensor<4, 3> &t)
+  {
+    Matrix6 m;
+    for (unsigned int I = 0; I < 6; ++I)
+      for (unsigned int J = 0; J < 6; ++J)
+      {
+        const auto i = kelvin_indices()[I], j = kelvin_indices()[J];
+        m[I][J] = kelvin_weight(I) * kelvin_weight(J)
+                  * t[i.first][i.second][j.first][j.second];
+      }
+    return m;
+  }
+
+  // Solves A x = b (n <= 6) by Gaussian elimination with partial pivoting.
+  inline std::array<double, 6>
+  solve(std::array<std::array<double, 6>, 6> A,
+        std::array<double, 6>                b,
+        const unsigned int                   n)
+  {
+    for (unsigned int k = 0; k < n; ++k)
+    {
+      unsigned int p = k;
+      for (unsigned int i = k + 1; i < n; ++i)
+        if (std::abs(A[i][k]) > std::abs(A[p][k]))
+          p = i;
+      std::swap(A[k], A[p]);
+      std::swap(b[k], b[p]);
+      if (A[k][k] == 0.)
+        throw std::runtime_error("singular matrix");
+      for (unsigned int i = k + 1; i < n; ++i)
+      {
+        const double f = A[i][k] / A[k][k];
+        for (unsigned int j = k; j < n; ++j)
+          A[i][j] -= f * A[k][j];
+        b[i] -= f * b[k];
+      }
+    }
+    std::array<double, 6> x{};
+    for (int k = n - 1; k >= 0; --k)
+    {
+      double s = b[k];
+      for (unsigned int j = k + 1; j < n; ++j)
+        s -= A[k][j] * x[j];
+      x[k] = s / A[k][k];
+    }
+    return x;
+  }
+
+  // Rotation in the sheet plane: rows of Q are the load axes (1' = load
+  // direction at angle theta from rolling, 2' = width, 3' = normal) in the
+  // material frame. a_load = Q a_mat Q^T.
+  inline Tensor<2, 3>
+  load_axes(const double angle_in_degrees)
+  {
+    const double theta = angle_in_degrees * M_PI / 180.;
+    Tensor<2, 3> Q;
+    Q[0][0] = std::cos(theta);
+    Q[0][1] = std::sin(theta);
+    Q[1][0] = -std::sin(theta);
+    Q[1][1] = std::cos(theta);
+    Q[2][2] = 1.;
+    return Q;
+  }
+
+  inline SymmetricTensor<2, 3>
+  rotate(const Tensor<2, 3> &Q, const SymmetricTensor<2, 3> &a)
+  {
+    return symmetrize(Tensor<2, 3>(Q * Tensor<2, 3>(a) * transpose(Q)));
+  }
+
+  // Kelvin matrix R of a -> Q a Q^T (orthogonal): column J is the image of
+  // the J-th Kelvin basis tensor.
+  inline Matrix6
+  kelvin_rotation(const Tensor<2, 3> &Q)
+  {
+    Matrix6 R;
+    for (unsigned int J = 0; J < 6; ++J)
+    {
+      Vector6 e{};
+      e[J]            = 1.;
+      const Vector6 c = to_kelvin(rotate(Q, from_kelvin(e)));
+      for (unsigned int I = 0; I < 6; ++I)
+        R[I][J] = c[I];
+    }
+    return R;
+  }
+
+  // Uniaxial test in the direction `angle` of the sheet plane. The state
+  // and the total strain are kept in the material frame, like the solver
+  // does; the driver works in the load frame.
+  class UniaxialDriver
+  {
+  public:
+    UniaxialDriver(const HillPlasticity &material, const double angle)
+        : material(material)
+        , Q(load_axes(angle))
+        , R(kelvin_rotation(Q))
+    {
+    }
+
+    // Axial strain increment d prescribed, the five other stress
+    // components in the load frame zero. Returns false if not converged.
+    bool
+    strain_step(const double d)
+    {
+      return solve_step(d, 0., false);
+    }
+
+    // Load-frame stress driven to s e1'(x)e1' (all six components).
+    bool
+    stress_step(const double s)
+    {
+      return solve_step(0., s, true);
+    }
+
+    // Stress, strain and back stress in the load frame.
+    SymmetricTensor<2, 3>
+    stress() const
+    {
+      return rotate(Q, state.stress);
+    }
+    SymmetricTensor<2, 3>
+    strain() const
+    {
+      return rotate(Q, total_strain);
+    }
+    SymmetricTensor<2, 3>
+    back_stress() const
+    {
+      return rotate(Q, state.back_stress);
+    }
+
+    MaterialPointState    state;
+    SymmetricTensor<2, 3> total_strain; // material frame
+    bool                  plastic    = false;
+    unsigned int          iterations = 0;
+
+  private:
+    // Newton on the load-frame Kelvin strain increment e: for the mixed
+    // case e_0 = d is fixed and the residual is sigma'_1..5; for the stress
+    // case the residual is sigma' - s e1'(x)e1'.
+    bool
+    solve_step(const double d, const double s, const bool stress_control)
+    {
+      Vector6 e{};
+      e[0]                     = d;
+      const unsigned int first = stress_control ? 0 : 1;
+      MaterialPointState new_state;
+      for (iterations = 0; iterations < 50; ++iterations)
+      {
+        // Material-frame increment: a_mat = Q^T a_load Q.
+        const SymmetricTensor<2, 3> increment
+          = rotate(transpose(Q), from_kelvin(e));
+        SymmetricTensor<4, 3> tangent;
+        if (!material.update(state, increment, new_state, tangent, plastic))
+          return false;
+        Vector6 residual = to_kelvin(rotate(Q, new_state.stress));
+        if (stress_control)
+          residual[0] -= s;
+        double norm = 0.;
+        for (unsigned int I = first; I < 6; ++I)
+          norm = std::max(norm, std::abs(residual[I]));
+        if (norm <= 1e-10)
+        {
+          state = new_state;
+          total_strain += increment;
+          return true;
+        }
+        // Load-frame Kelvin tangent R T R^T; the sub-block of the
+        // unknowns.
+        const Matrix6 T = to_kelvin(tangent);
+        Matrix6       A{};
+        Vector6       b{};
+        for (unsigned int I = first; I < 6; ++I)
+        {
+          for (unsigned int J = first; J < 6; ++J)
+            for (unsigned int K = 0; K < 6; ++K)
+              for (unsigned int L = 0; L < 6; ++L)
+                A[I - first][J - first] += R[I][K] * T[K][L] * R[J][L];
+          b[I - first] = -residual[I];
+        }
+        const Vector6 de = solve(A, b, 6 - first);
+        for (unsigned int I = first; I < 6; ++I)
+          e[I] += de[I - first];
+      }
+      return false;
+    }
+
+    const HillPlasticity &material;
+    const Tensor<2, 3>    Q;
+    const Matrix6         R;
+  };
+
+  inline MaterialParameters
+  von_mises_parameters()
+  {
+    MaterialParameters p;
+    p.hill_F = p.hill_G = p.hill_H = 0.5;
+    p.hill_L = p.hill_M = p.hill_N = 1.5;
+    return p;
+  }
+
+  // Root of a function changing sign on [a, b] by bisection to the last
+  // bit: the independent scalar solver of the reference solutions.
+  template <typename Function>
+  double
+  bisect(const Function &f, double a, double b)
+  {
+    double fa = f(a);
+    for (unsigned int i = 0; i < 200; ++i)
+    {
+      const double c = 0.5 * (a + b);
+      if (c == a || c == b)
+        break;
+      const double fc = f(c);
+      if ((fc > 0.) == (fa > 0.))
+      {
+        a  = c;
+        fa = fc;
+      }
+      else
+        b = c;
+    }
+    return 0.5 * (a + b);
+  }
+} // namespace material_test
+
+#endif

@@ -1,0 +1,155 @@
+// MaterialParameters: declared entries and their defaults, parsing inside
+// "subsection Material", and the checks a Pattern cannot make: a bad value
+// throws deepdraw::InputError whose message names "Material/<entry>".
+#include "../test_utilities.h"
+
+#include <deal.II/base/parameter_handler.h>
+#include <deepdraw/io/input_error.h>
+#include <deepdraw/material/hill_plasticity.h>
+#include <deepdraw/material/material_parameters.h>
+#include <string>
+#include <utility>
+#include <vector>
+
+using deepdraw::material::MaterialParameters;
+
+namespace
+{
+  // Parses "subsection Material" with the given body; returns the InputError
+  // message, or "" if parsing succeeded.
+  std::string
+  parse(const std::string &body, MaterialParameters &parameters)
+  {
+    dealii::ParameterHandler prm;
+    prm.enter_subsection("Material");
+    MaterialParameters::declare_parameters(prm);
+    prm.leave_subsection();
+    prm.parse_input_from_string("subsection Material\n" + body + "\nend\n");
+    prm.enter_subsection("Material");
+    try
+    {
+      parameters.parse_parameters(prm);
+    }
+    catch (const deepdraw::InputError &e)
+    {
+      prm.leave_subsection();
+      return e.what();
+    }
+    prm.leave_subsection();
+    return "";
+  }
+} // namespace
+
+int
+main()
+{
+  // Defaults = the struct initialisers (NUMISHEET'93).
+  {
+    MaterialParameters parameters;
+    parameters.hill_F = -1.; // overwritten by parsing
+    deepdraw_test::check_true("defaults parse", parse("", parameters).empty());
+    const MaterialParameters d;
+    deepdraw_test::check_close("Hill F default",
+                               parameters.hill_F,
+                               d.hill_F,
+                               0.);
+    deepdraw_test::check_close("Swift coefficient default",
+                               parameters.swift_coefficient,
+                               576.79,
+                               0.);
+    deepdraw_test::check_close("Swift exponent default",
+                               parameters.swift_exponent,
+                               0.3593,
+                               0.);
+  }
+  // All twelve entries are read.
+  {
+    MaterialParameters parameters;
+    const std::string  body
+      = "set Young's modulus = 210000\nset Poisson's ratio = 0.3\n"
+        "set Hill F = 0.1\nset Hill G = 0.2\nset Hill H = 0.3\n"
+        "set Hill L = 1.1\nset Hill M = 1.2\nset Hill N = 1.3\n"
+        "set Swift coefficient = 500\nset Swift prestrain = 0.02\n"
+        "set Swift exponent = 0.25\nset Prager modulus = 1000";
+    deepdraw_test::check_true("custom values parse",
+                              parse(body, parameters).empty());
+    const double read[] = {parameters.youngs_modulus,
+                           parameters.poissons_ratio,
+                           parameters.hill_F,
+                           parameters.hill_G,
+                           parameters.hill_H,
+                           parameters.hill_L,
+                           parameters.hill_M,
+                           parameters.hill_N,
+                           parameters.swift_coefficient,
+                           parameters.swift_prestrain,
+                           parameters.swift_exponent,
+                           parameters.prager_modulus};
+    const double expected[]
+      = {210000, 0.3, 0.1, 0.2, 0.3, 1.1, 1.2, 1.3, 500, 0.02, 0.25, 1000};
+    for (unsigned int i = 0; i < 12; ++i)
+      deepdraw_test::check_close("entry " + std::to_string(i),
+                                 read[i],
+                                 expected[i],
+                                 0.);
+  }
+
+  // Values a Pattern lets through but the model cannot use.
+  const std::vector<std::pair<std::string, std::string>> bad
+    = {{"set Young's modulus = 0", "Material/Young's modulus"},
+       {"set Poisson's ratio = 0.5", "Material/Poisson's ratio"},
+       {"set Swift coefficient = 0", "Material/Swift coefficient"},
+       {"set Swift prestrain = 0", "Material/Swift prestrain"},
+       {"set Swift exponent = 1", "Material/Swift exponent"},
+       {"set Hill G = 0\nset Hill H = 0", "Material/Hill G"},
+       {"set Hill F = 0\nset Hill H = 0", "Material/Hill F"},
+       {"set Hill F = 0\nset Hill G = 0", "Material/Hill F"},
+       {"set Hill L = 0", "Material/Hill L"},
+       {"set Hill M = 0", "Material/Hill M"},
+       {"set Hill N = 0", "Material/Hill N"}};
+  for (const auto &[body, name] : bad)
+  {
+    MaterialParameters parameters;
+    const std::string  message = parse(body, parameters);
+    std::cout << "  [" << body << "] -> " << message << std::endl;
+    deepdraw_test::check_true("throws InputError naming " + name,
+                              message.find(name) != std::string::npos
+                                && message.find("allowed")
+                                     != std::string::npos);
+  }
+
+  // Values outside a Pattern are refused by ParameterHandler itself.
+  {
+    MaterialParameters parameters;
+    bool               refused = false;
+    try
+    {
+      parse("set Hill G = -0.1", parameters);
+    }
+    catch (const dealii::ExceptionBase &)
+    {
+      refused = true;
+    }
+    deepdraw_test::check_true("Hill G = -0.1 refused by its Pattern", refused);
+  }
+
+  // Parameters set in code are validated by the HillPlasticity constructor.
+  {
+    MaterialParameters parameters;
+    parameters.hill_G = -0.2;
+    std::string message;
+    try
+    {
+      deepdraw::material::HillPlasticity material(parameters);
+    }
+    catch (const deepdraw::InputError &e)
+    {
+      message = e.what();
+    }
+    std::cout << "  [constructor, Hill G = -0.2] -> " << message << std::endl;
+    deepdraw_test::check_true("constructor throws naming Material/Hill G",
+                              message.find("Material/Hill G")
+                                != std::string::npos);
+  }
+  return deepdraw_test::summary();
+}
