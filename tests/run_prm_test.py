@@ -26,6 +26,9 @@ def main():
     parser.add_argument("--deepdraw", required=True)
     parser.add_argument("--prm", required=True)
     parser.add_argument("--work-dir", required=True)
+    parser.add_argument("--expected-error",
+                        help="file with the expected error lines (default: "
+                             "<name>.expected_error next to the prm)")
     args = parser.parse_args()
 
     prm = pathlib.Path(args.prm)
@@ -42,7 +45,8 @@ def main():
                          stderr=subprocess.STDOUT, text=True)
     print(run.stdout)
 
-    expected_error = pathlib.Path(str(stem) + ".expected_error")
+    expected_error = pathlib.Path(args.expected_error or
+                                  str(stem) + ".expected_error")
     if expected_error.exists():
         if run.returncode == 0:
             sys.exit("FAILED: the run succeeded but was expected to fail")

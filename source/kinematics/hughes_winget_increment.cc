@@ -28,6 +28,8 @@ namespace deepdraw
       // Q = (I - dW/2)^{-1}(I + dW/2): orthogonal for any skew dW.
       inverse_a = invert(identity - 0.5 * spin_increment);
       rotation  = inverse_a * (identity + 0.5 * spin_increment);
+      inverse_a_half = invert(identity - 0.25 * spin_increment);
+      half_rotation  = inverse_a_half * (identity + 0.25 * spin_increment);
       return true;
     }
 
@@ -37,7 +39,8 @@ namespace deepdraw
     HughesWingetIncrement::variation(const Tensor<2, 3> &dH,
                                      Tensor<2, 3>       &d_strain_increment,
                                      Tensor<2, 3>       &d_spin_increment,
-                                     Tensor<2, 3>       &d_rotation) const
+                                     Tensor<2, 3>       &d_rotation,
+                                     Tensor<2, 3> &d_half_rotation) const
     {
       const Tensor<2, 3> identity = unit_symmetric_tensor<3>();
       // d(dL) = (I - dL/2) dH F_half^{-1}
@@ -50,6 +53,8 @@ namespace deepdraw
         0.5 * (d_velocity_gradient - transpose(d_velocity_gradient));
       // dQ = A^{-1} (d dW / 2) (I + Q), A = I - dW/2
       d_rotation = 0.5 * inverse_a * d_spin_increment * (identity + rotation);
+      d_half_rotation =
+        0.25 * inverse_a_half * d_spin_increment * (identity + half_rotation);
     }
   } // namespace kinematics
 } // namespace deepdraw

@@ -21,9 +21,13 @@ namespace deepdraw
       const Tensor<2, 3> &R_old = old_history.material_axes;
       const Tensor<2, 3>  R     = increment.rotation * R_old;
       const Tensor<2, 3>  RT    = transpose(R);
-      const Tensor<2, 3>  strain_increment(increment.strain_increment);
+      // d_eps lives in the mid-increment configuration: measure it in the
+      // axes rotated by half the increment (second-order accurate).
+      const Tensor<2, 3> R_half  = increment.half_rotation * R_old;
+      const Tensor<2, 3> R_halfT = transpose(R_half);
+      const Tensor<2, 3> strain_increment(increment.strain_increment);
       const SymmetricTensor<2, 3> material_strain_increment =
-        symmetrize(RT * strain_increment * R);
+        symmetrize(R_halfT * strain_increment * R_half);
 
       SymmetricTensor<4, 3> algorithmic_tangent;
       if (!material.update(old_history.state,
@@ -50,13 +54,15 @@ namespace deepdraw
           {
             Tensor<2, 3> dH;
             dH[k][l] = 1.;
-            Tensor<2, 3> d_strain, d_spin, dQ;
-            increment.variation(dH, d_strain, d_spin, dQ);
-            const Tensor<2, 3> dR  = dQ * R_old;
-            const Tensor<2, 3> dRT = transpose(dR);
-            const SymmetricTensor<2, 3> d_material_strain =
-              symmetrize(dRT * strain_increment * R + RT * d_strain * R
-                         + RT * strain_increment * dR);
+            Tensor<2, 3> d_strain, d_spin, dQ, dQ_half;
+            increment.variation(dH, d_strain, d_spin, dQ, dQ_half);
+            const Tensor<2, 3> dR      = dQ * R_old;
+            const Tensor<2, 3> dRT     = transpose(dR);
+            const Tensor<2, 3> dR_half = dQ_half * R_old;
+            const SymmetricTensor<2, 3> d_material_strain = symmetrize(
+              transpose(dR_half) * strain_increment * R_half
+              + R_halfT * d_strain * R_half
+              + R_halfT * strain_increment * dR_half);
             const Tensor<2, 3> d_material_stress(algorithmic_tangent
                                                  * d_material_strain);
             const Tensor<2, 3> d_sigma = dR * material_stress * RT

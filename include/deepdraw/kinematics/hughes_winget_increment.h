@@ -2,9 +2,11 @@
 // from the displacement-increment gradient H = grad_{x_t}(du) it computes the
 // mid-increment velocity gradient dL = H F_half^{-1} (F_half = I + H/2), the
 // strain increment d_eps = sym dL, the spin increment dW = skew dL and the
-// Hughes-Winget rotation Q = (I - dW/2)^{-1} (I + dW/2), plus the directional
-// derivative of all of them along a variation dH, which the consistent
-// tangent needs.
+// Hughes-Winget rotation Q = (I - dW/2)^{-1} (I + dW/2), the half-step
+// rotation Q_half = (I - dW/4)^{-1} (I + dW/4) that carries the material
+// axes to the mid-increment configuration where d_eps is measured, plus the
+// directional derivative of all of them along a variation dH, which the
+// consistent tangent needs.
 #ifndef deepdraw_kinematics_hughes_winget_increment_h
 #define deepdraw_kinematics_hughes_winget_increment_h
 
@@ -25,12 +27,13 @@ namespace deepdraw
       bool
       reinit(const Tensor<2, 3> &displacement_increment_gradient);
 
-      // Variation of d_eps, dW and Q for a variation dH of H.
+      // Variation of d_eps, dW, Q and Q_half for a variation dH of H.
       void
       variation(const Tensor<2, 3> &dH,
                 Tensor<2, 3>       &d_strain_increment,
                 Tensor<2, 3>       &d_spin_increment,
-                Tensor<2, 3>       &d_rotation) const;
+                Tensor<2, 3>       &d_rotation,
+                Tensor<2, 3>       &d_half_rotation) const;
 
       Tensor<2, 3>          H;
       Tensor<2, 3>          deformation_gradient; // F = I + H
@@ -40,10 +43,12 @@ namespace deepdraw
       SymmetricTensor<2, 3> strain_increment;            // sym dL
       Tensor<2, 3>          spin_increment;              // skew dL
       Tensor<2, 3>          rotation;                    // Q
+      Tensor<2, 3>          half_rotation;               // Q_half
 
     private:
       Tensor<2, 3> inverse_half_deformation_gradient; // F_half^{-1}
       Tensor<2, 3> inverse_a;                         // (I - dW/2)^{-1}
+      Tensor<2, 3> inverse_a_half;                    // (I - dW/4)^{-1}
     };
   } // namespace kinematics
 } // namespace deepdraw

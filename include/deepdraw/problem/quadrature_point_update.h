@@ -5,8 +5,9 @@
 // stress relative to the configuration at t:
 //   Hughes-Winget: dL = H F_half^{-1}, d_eps = sym dL, dW = skew dL,
 //                  Q = (I - dW/2)^{-1}(I + dW/2);
-//   material axes R_{n+1} = Q R_n, material-frame strain
-//                  d_eps^ = R_{n+1}^T d_eps R_{n+1};
+//   material axes R_{n+1} = Q R_n; the strain increment, measured at mid
+//                  increment, enters the material frame with the half-step
+//                  axes: d_eps^ = R_half^T d_eps R_half, R_half = Q_half R_n;
 //   return mapping sigma^_{n+1} = sigma^(state_n, d_eps^) (Hill'48);
 //   sigma = R_{n+1} sigma^ R_{n+1}^T, P = det(F) sigma F^{-T}, F = I + H.
 // dP/dH differentiates every step of this chain (algorithmic tangent,
