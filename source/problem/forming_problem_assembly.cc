@@ -198,12 +198,31 @@ namespace deepdraw
                       AssemblyCopy());
       n_plastic_points = plastic_points;
       assembly_time += timer.wall_time();
+      total_assembly_seconds += timer.wall_time();
 
       if (worst_status == 1)
         return IncrementOutcome::inverted_element;
       if (worst_status == 2)
         return IncrementOutcome::return_mapping_failed;
       return IncrementOutcome::converged;
+    }
+
+
+
+    bool
+    FormingProblem::assemble_system(const Vector<double> &du)
+    {
+      AffineConstraints<double> none;
+      none.close();
+      return assemble(du, none, true) == IncrementOutcome::converged;
+    }
+
+
+
+    double
+    FormingProblem::total_assembly_time() const
+    {
+      return total_assembly_seconds;
     }
 
 
