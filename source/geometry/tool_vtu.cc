@@ -1,0 +1,91 @@
+#include <cmath>
+#include <deal.II/base/exceptions.h>
+#include <deepdraw/geometry/tool_vtu.h>
+#include <fstream>
+
+namespace deepdraw::geometry
+{
+  void
+  write_vtu(const RigidTool   &tool,
+            const std::string &filename,
+            const unsigned int subdivisions)
+  {
+    AssertThrow(subdivisions >= 1,
+                dealii::ExcMessage("write_vtu: subdivisions must be >= 1"));
+    std::ofstream out(filename);
+    AssertThrow(out,
+                dealii::ExcMessage("Cannot write the tool output file "
+                                   + filename));
+    out.precision(10);
+
+    const unsigned int n_side   = subdivisions + 1;
+    const unsigned int n_points = tool.n_patches() * n_side * n_side;
+    const unsigned int n_cells
+      = tool.n_patches() * 2 * subdivisions * subdivisions;
+    const auto &rotation = tool.rotation();
+
+    out << "<?xml version=\"1.0\"?>\n"
+        << "<!-- tool '" << tool.name() << "', " << tool.n_patches()
+        << " Bezier patches -->\n"
+        << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" "
+           "byte_order=\"LittleEndian\">\n"
+        << "<UnstructuredGrid>\n"
+        << "<Piece NumberOfPoints=\"" << n_points << "\" NumberOfCells=\""
+        << n_cells << "\">\n"
+        << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" "
+           "format=\"ascii\">\n";
+    for (const BezierPatch &patch : tool.patches())
+      for (unsigned int j = 0; j < n_side; ++j)
+        for (unsigned int i = 0; i < n_side; ++i)
+        {
+          const dealii::Point<3> x = tool.to_global(
+            patch.value(i / double(subdivisions), j / double(subdivisions)));
+          out << x[0] << ' ' << x[1] << ' ' << x[2] << '\n';
+        }
+    out
+      << "</DataArray>\n</Points>\n<Cells>\n"
+      << "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+    for (unsigned int k = 0; k < tool.n_patches(); ++k)
+      for (unsigned int j = 0; j < subdivisions; ++j)
+        for (unsigned int i = 0; i < subdivisions; ++i)
+        {
+          const unsigned int v00 = k * n_side * n_side + j * n_side + i;
+          const unsigned int v10 = v00 + 1, v01 = v00 + n_side, v11 = v01 + 1;
+          out << v00 << ' ' << v10 << ' ' << v11 << '\n'
+              << v00 << ' ' << v11 << ' ' << v01 << '\n';
+        }
+    out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" "
+           "format=\"ascii\">\n";
+    for (unsigned int c = 1; c <= n_cells; ++c)
+      out << 3 * c << '\n';
+    out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" "
+           "format=\"ascii\">\n";
+    for (unsigned int c = 0; c < n_cells; ++c)
+      out << "5\n"; // VTK_TRIANGLE
+    out << "</DataArray>\n</Cells>\n<PointData Normals=\"normal\">\n"
+        << "<DataArray type=\"Float64\" Name=\"normal\" "
+           "NumberOfComponents=\"3\" format=\"ascii\">\n";
+    for (const BezierPatch &patch : tool.patches())
+      for (unsigned int j = 0; j < n_side; ++j)
+        for (unsigned int i = 0; i < n_side; ++i)
+        {
+          dealii::Tensor<1, 3> n
+            = rotation
+              * patch.unit_normal(i / double(subdivisions),
+                                  j / double(subdivisions));
+          // A collapsed edge has no normal.
+          if (!(std::isfinite(n[0]) && std::isfinite(n[1])
+                && std::isfinite(n[2])))
+            n = 0;
+          out << n[0] << ' ' << n[1] << ' ' << n[2] << '\n';
+        }
+    out << "</DataArray>\n</PointData>\n<CellData Scalars=\"patch\">\n"
+        << "<DataArray type=\"Int32\" Name=\"patch\" format=\"ascii\">\n";
+    for (unsigned int k = 0; k < tool.n_patches(); ++k)
+      for (unsigned int c = 0; c < 2 * subdivisions * subdivisions; ++c)
+        out << k << '\n';
+    out << "</DataArray>\n</CellData>\n</Piece>\n</UnstructuredGrid>\n</"
+           "VTKFile>\n";
+    AssertThrow(out, dealii::ExcMessage("Error while writing " + filename));
+  }
+} // namespace deepdraw::geometry
