@@ -97,7 +97,11 @@ main(int argc, char *argv[])
           prm.set("Output directory", output_directory);
           prm.leave_subsection();
         }
-      forming_problem = std::make_unique<problem::FormingProblem>(prm);
+      const auto slash = prm_file.find_last_of('/');
+      const std::string input_directory =
+        slash == std::string::npos ? "." : prm_file.substr(0, slash);
+      forming_problem =
+        std::make_unique<problem::FormingProblem>(prm, input_directory);
     }
   catch (const InputError &error)
     {
@@ -114,6 +118,11 @@ main(int argc, char *argv[])
   try
     {
       forming_problem->run();
+    }
+  catch (const InputError &error)
+    {
+      std::cerr << "deepdraw: error in the input: " << error.what() << std::endl;
+      return 2;
     }
   catch (const problem::RunFailure &failure)
     {

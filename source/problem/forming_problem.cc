@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <sstream>
 
 namespace deepdraw
 {
@@ -41,11 +42,14 @@ namespace deepdraw
       solver::NewtonParameters::declare_parameters(prm);
       solver::LinearSolverParameters::declare_parameters(prm);
       io::OutputParameters::declare_parameters(prm);
+      geometry::SquareCupToolParameters::declare_parameters(prm);
+      ContactCoupling::declare_parameters(prm);
     }
 
 
 
-    FormingProblem::FormingProblem(ParameterHandler &prm)
+    FormingProblem::FormingProblem(ParameterHandler  &prm,
+                                   const std::string &input_directory)
       : fe(FE_Q<3>(1), 3)
       , dof_handler(triangulation)
       , fe_scalar(1)
@@ -66,6 +70,8 @@ namespace deepdraw
       newton_parameters.parse_parameters(prm);
       linear_solver_parameters.parse_parameters(prm);
       output_parameters.parse_parameters(prm);
+      square_cup_tool_parameters.parse_parameters(prm);
+      contact.parse_parameters(prm, input_directory);
 
       material = std::make_unique<material::HillPlasticity>(material_parameters);
       linear_solver =
@@ -133,17 +139,55 @@ namespace deepdraw
         homogeneous_constraints.add_line(dof);
       homogeneous_constraints.close();
 
-      DynamicSparsityPattern dsp(dof_handler.n_dofs(), dof_handler.n_dofs());
+      // Contact unknowns follow the displacements (block system of
+      // reference Eq. 19).
+      types::global_dof_index n_unknowns = dof_handler.n_dofs();
+      if (contact.active())
+        {
+          contact.create_tools(square_cup_tool_parameters, geometry.thickness);
+          std::vector<std::vector<unsigned int>> face_vertices(6);
+          for (const auto &cell : triangulation.active_cell_iterators())
+            for (const auto &face : cell->face_iterators())
+              if (face->at_boundary())
+                for (const unsigned int v : face->vertex_indices())
+                  face_vertices[face->boundary_id()].push_back(
+                    face->vertex_index(v));
+          for (auto &vertices : face_vertices)
+            {
+              std::sort(vertices.begin(), vertices.end());
+              vertices.erase(std::unique(vertices.begin(), vertices.end()),
+                             vertices.end());
+            }
+          const double element_size =
+            std::sqrt(geometry.length / geometry.elements_along_x
+                      * geometry.width / geometry.elements_along_y);
+          n_unknowns += contact.create_pairs(face_vertices,
+                                             vertex_dofs,
+                                             dof_handler.n_dofs(),
+                                             material_parameters.youngs_modulus,
+                                             element_size);
+        }
+
+      DynamicSparsityPattern displacement_dsp(dof_handler.n_dofs(),
+                                              dof_handler.n_dofs());
       DoFTools::make_sparsity_pattern(dof_handler,
-                                      dsp,
+                                      displacement_dsp,
                                       homogeneous_constraints,
                                       /*keep_constrained_dofs=*/true);
+      DynamicSparsityPattern dsp(n_unknowns, n_unknowns);
+      for (types::global_dof_index row = 0; row < dof_handler.n_dofs(); ++row)
+        for (auto entry = displacement_dsp.begin(row);
+             entry != displacement_dsp.end(row);
+             ++entry)
+          dsp.add(row, entry->column());
+      contact.add_sparsity(dsp);
       sparsity_pattern.copy_from(dsp);
       system_matrix.reinit(sparsity_pattern);
-      system_rhs.reinit(dof_handler.n_dofs());
-      internal_force.reinit(dof_handler.n_dofs());
+      system_rhs.reinit(n_unknowns);
+      internal_force.reinit(n_unknowns);
       total_displacement.reinit(dof_handler.n_dofs());
-      displacement_increment.reinit(dof_handler.n_dofs());
+      displacement_increment.reinit(n_unknowns);
+      converged_solution.reinit(n_unknowns);
 
       history.assign(triangulation.n_active_cells() * fe::n_weighted_points,
                      QuadraturePointHistory());
@@ -208,16 +252,41 @@ namespace deepdraw
 
 
 
+    namespace
+    {
+      // l2 norm of the first n entries (the displacement block).
+      double
+      block_norm(const Vector<double> &vector, const types::global_dof_index n)
+      {
+        double sum = 0.;
+        for (types::global_dof_index i = 0; i < n; ++i)
+          sum += vector[i] * vector[i];
+        return std::sqrt(sum);
+      }
+    } // namespace
+
+
+
     FormingProblem::IncrementOutcome
     FormingProblem::solve_increment(const double  old_load,
                                     const double  new_load,
                                     unsigned int &iterations)
     {
+      const types::global_dof_index n_u = dof_handler.n_dofs();
       set_up_prescribed_increment(old_load, new_load);
-      displacement_increment = 0.;
+      if (contact.active())
+        contact.start_increment(old_load, new_load);
+      target_load = new_load;
+      // Displacement increment 0; contact forces and tool positions start
+      // from their converged values.
+      displacement_increment = converged_solution;
+      for (types::global_dof_index i = 0; i < n_u; ++i)
+        displacement_increment[i] = 0.;
       residual_history.clear();
-      Vector<double> correction(dof_handler.n_dofs());
-      double         correction_norm = 0.;
+      contact_residual_history.clear();
+      contact_changes = 0;
+      Vector<double> correction(displacement_increment.size());
+      double         correction_norm   = 0.;
       double         smallest_residual = std::numeric_limits<double>::max();
 
       for (iterations = 0;; ++iterations)
@@ -235,29 +304,42 @@ namespace deepdraw
             {
               Vector<double> free_residual = system_rhs;
               homogeneous_constraints.set_zero(free_residual);
-              const double reference = internal_force.l2_norm();
+              double reference = block_norm(internal_force, n_u);
+              for (const Tensor<1, 3> &force : contact.tool_forces())
+                reference = std::max(reference, force.norm());
+              if (!(reference > 0.))
+                reference = 1.;
               const double force_residual =
-                reference > 0. ? free_residual.l2_norm() / reference :
-                                 free_residual.l2_norm();
-              const double increment_norm = displacement_increment.l2_norm();
+                block_norm(free_residual, n_u) / reference;
+              const double contact_residual =
+                contact.residual_norm(system_rhs) / reference;
+              const double increment_norm =
+                block_norm(displacement_increment, n_u);
               const double relative_correction =
                 increment_norm > 0. ? correction_norm / increment_norm : 0.;
               residual_history.push_back(force_residual);
+              contact_residual_history.push_back(contact_residual);
               newton_file.add_row({double(increment_number + 1),
                                    new_load,
                                    double(iterations),
                                    force_residual,
+                                   contact_residual,
                                    relative_correction});
 
-              if (!std::isfinite(force_residual))
+              if (!std::isfinite(force_residual)
+                  || !std::isfinite(contact_residual))
                 return IncrementOutcome::not_a_number;
+              // After the predictor the whole increment is "correction":
+              // there only the residuals decide.
               if (force_residual <= newton_parameters.force_tolerance
-                  && relative_correction
-                       <= newton_parameters.correction_tolerance)
+                  && contact_residual <= newton_parameters.force_tolerance
+                  && (iterations == 1
+                      || relative_correction
+                           <= newton_parameters.correction_tolerance))
                 return IncrementOutcome::converged;
-              smallest_residual = std::min(smallest_residual, force_residual);
-              if (force_residual
-                  > newton_parameters.divergence_ratio * smallest_residual)
+              const double residual = std::max(force_residual, contact_residual);
+              smallest_residual     = std::min(smallest_residual, residual);
+              if (residual > newton_parameters.divergence_ratio * smallest_residual)
                 return IncrementOutcome::diverged;
               if (iterations >= newton_parameters.maximum_iterations)
                 return IncrementOutcome::too_many_iterations;
@@ -275,8 +357,8 @@ namespace deepdraw
             }
           constraints.distribute(correction);
           solve_time += timer.wall_time();
-          correction_norm = correction.l2_norm();
-          if (!std::isfinite(correction_norm))
+          correction_norm = block_norm(correction, n_u);
+          if (!std::isfinite(correction.l2_norm()))
             return IncrementOutcome::not_a_number;
           displacement_increment += correction;
         }
@@ -288,7 +370,11 @@ namespace deepdraw
     FormingProblem::commit_increment()
     {
       history = trial_history;
-      total_displacement += displacement_increment;
+      for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
+        total_displacement[i] += displacement_increment[i];
+      converged_solution = displacement_increment;
+      if (contact.active())
+        contact.commit(displacement_increment);
       // Updated Lagrangian: the converged configuration becomes the
       // reference of the next increment (step-18 moves the vertices too).
       std::vector<bool> moved(triangulation.n_vertices(), false);
@@ -307,10 +393,53 @@ namespace deepdraw
 
 
 
+    namespace
+    {
+      std::string
+      format_load(const double load)
+      {
+        std::ostringstream text;
+        text << std::setprecision(6) << load;
+        return text.str();
+      }
+    } // namespace
+
+
+
     void
     FormingProblem::run()
     {
-      open_output_files();
+      try
+        {
+          open_output_files();
+        }
+      catch (const std::exception &error)
+        {
+          throw InputError("Output/Output directory: cannot write results to '"
+                           + output_parameters.output_directory
+                           + "': " + error.what());
+        }
+      std::cout << "deepdraw: " << triangulation.n_active_cells()
+                << " cells, " << dof_handler.n_dofs()
+                << " displacement unknowns, "
+                << displacement_increment.size() - dof_handler.n_dofs()
+                << " contact unknowns, "
+                << (selective_reduced_integration ? "selective reduced" :
+                                                    "full")
+                << " integration" << std::endl;
+      if (contact.active())
+        {
+          contact.start_increment(0., 0.);
+          const unsigned int penetrating =
+            contact.n_initial_penetrations(triangulation.get_vertices());
+          if (penetrating > 0)
+            std::cout << "deepdraw: " << penetrating
+                      << " sheet nodes start inside a tool; the first "
+                         "increment pushes them out"
+                      << std::endl;
+          // Tool placement and contact fields of the initial state.
+          assemble(displacement_increment, homogeneous_constraints, false);
+        }
       write_vtu(0.);
 
       std::vector<double> landing_loads;
@@ -321,12 +450,6 @@ namespace deepdraw
           landing_loads.push_back(load);
       solver::IncrementControl control(increment_parameters, landing_loads);
 
-      std::cout << "deepdraw: " << triangulation.n_active_cells()
-                << " cells, " << dof_handler.n_dofs() << " unknowns, "
-                << (selective_reduced_integration ? "selective reduced" :
-                                                    "full")
-                << " integration" << std::endl;
-
       Timer run_timer;
       while (!control.finished())
         {
@@ -334,6 +457,7 @@ namespace deepdraw
           const double new_load = old_load + control.next_increment();
           assembly_time         = 0.;
           solve_time            = 0.;
+          const double search_time_before = contact.search_time();
           Timer        increment_timer;
           unsigned int iterations = 0;
           const IncrementOutcome outcome =
@@ -341,18 +465,27 @@ namespace deepdraw
 
           if (outcome != IncrementOutcome::converged)
             {
-              std::cout << "  load " << new_load << ": " << describe(outcome)
-                        << ", cutting the increment back" << std::endl;
+              std::cout << "  load " << format_load(new_load) << ": "
+                        << describe(outcome) << ", cutting the increment back"
+                        << std::endl;
               trial_history = history;
               if (!control.cut_back())
-                throw RunFailure(
-                  "the increment from load " + std::to_string(old_load)
-                  + " could not be completed (" + describe(outcome)
-                  + ") even after "
-                  + std::to_string(control.cut_backs_of_current_increment())
-                  + " cut-backs; results up to load "
-                  + std::to_string(old_load) + " are in "
-                  + output_parameters.output_directory);
+                {
+                  const bool too_small = control.next_increment()
+                                         < increment_parameters.minimum_increment;
+                  throw RunFailure(
+                    "the increment from load " + format_load(old_load) + " to "
+                    + format_load(new_load) + " failed (" + describe(outcome)
+                    + ") after "
+                    + std::to_string(control.cut_backs_of_current_increment())
+                    + " attempt(s), and "
+                    + (too_small ?
+                         "a further cut-back would go below Load "
+                         "stepping/Minimum increment" :
+                         "Load stepping/Maximum cut-backs is reached")
+                    + "; the results up to load " + format_load(old_load)
+                    + " are in " + output_parameters.output_directory);
+                }
               continue;
             }
 
@@ -376,34 +509,47 @@ namespace deepdraw
             write_vtu(new_load);
           write_increment_tables(new_load);
           const double output_time = output_timer.wall_time();
+          const double search_time = contact.search_time() - search_time_before;
+          const double force_residual =
+            residual_history.empty() ? 0. : residual_history.back();
+          const double contact_residual =
+            contact_residual_history.empty() ? 0. :
+                                               contact_residual_history.back();
 
-          statistics_file.add_row(
-            {double(increment_number),
-             new_load,
-             new_load - old_load,
-             double(iterations),
-             double(cut_backs),
-             residual_history.empty() ? 0. : residual_history.back(),
-             double(n_plastic_points),
-             assembly_time,
-             solve_time,
-             output_time,
-             increment_timer.wall_time()});
+          statistics_file.add_row({double(increment_number),
+                                   new_load,
+                                   new_load - old_load,
+                                   double(iterations),
+                                   double(cut_backs),
+                                   force_residual,
+                                   contact_residual,
+                                   double(n_plastic_points),
+                                   double(contact_changes),
+                                   double(contact.n_stick()),
+                                   double(contact.n_slip()),
+                                   assembly_time,
+                                   search_time,
+                                   solve_time,
+                                   output_time,
+                                   increment_timer.wall_time()});
 
-          std::cout << "increment " << std::setw(4) << increment_number
-                    << "  load " << std::setw(10) << std::setprecision(5)
-                    << new_load << "  iterations " << std::setw(2)
-                    << iterations << "  cut-backs " << cut_backs
-                    << "  residual " << std::setprecision(2)
-                    << std::scientific
-                    << (residual_history.empty() ? 0. :
-                                                   residual_history.back())
-                    << std::defaultfloat << "  plastic points "
-                    << n_plastic_points << "  time " << std::setprecision(3)
-                    << increment_timer.wall_time() << " s" << std::endl;
+          std::ostringstream line;
+          line << "increment " << std::setw(4) << increment_number << "  load "
+               << std::setw(9) << format_load(new_load) << "  iterations "
+               << std::setw(2) << iterations << "  cut-backs " << cut_backs
+               << std::scientific << std::setprecision(2) << "  residuals "
+               << force_residual << " " << contact_residual
+               << std::defaultfloat << "  plastic points " << n_plastic_points;
+          if (contact.active())
+            line << "  stick/slip " << contact.n_stick() << "/"
+                 << contact.n_slip();
+          line << std::fixed << std::setprecision(3) << "  time "
+               << increment_timer.wall_time() << " s";
+          std::cout << line.str() << std::endl;
         }
-      std::cout << "deepdraw: finished at load " << control.current_load()
-                << " after " << increment_number << " increments in "
+      std::cout << "deepdraw: finished at load "
+                << format_load(control.current_load()) << " after "
+                << increment_number << " increments in "
                 << run_timer.wall_time() << " s; results in "
                 << output_parameters.output_directory << std::endl;
     }
@@ -462,6 +608,38 @@ namespace deepdraw
     FormingProblem::last_residuals() const
     {
       return residual_history;
+    }
+
+
+
+    const ContactCoupling &
+    FormingProblem::get_contact() const
+    {
+      return contact;
+    }
+
+
+
+    types::global_dof_index
+    FormingProblem::n_displacement_dofs() const
+    {
+      return dof_handler.n_dofs();
+    }
+
+
+
+    const Vector<double> &
+    FormingProblem::get_internal_force() const
+    {
+      return internal_force;
+    }
+
+
+
+    unsigned int
+    FormingProblem::last_plastic_points() const
+    {
+      return n_plastic_points;
     }
 
 

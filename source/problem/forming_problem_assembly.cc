@@ -124,9 +124,14 @@ namespace deepdraw
               plastic);
             if (status != PointStatus::ok)
               {
-                worst_status = std::max(worst_status.load(),
-                                        status == PointStatus::inverted ? 1 :
-                                                                          2);
+                // Atomic maximum: a return-mapping failure (2) is reported
+                // over an inverted element (1).
+                const int code = status == PointStatus::inverted ? 1 : 2;
+                int       seen = worst_status.load();
+                while (seen < code
+                       && !worst_status.compare_exchange_weak(seen, code))
+                  {
+                  }
                 return;
               }
             if (plastic)
@@ -199,6 +204,17 @@ namespace deepdraw
       n_plastic_points = plastic_points;
       assembly_time += timer.wall_time();
       total_assembly_seconds += timer.wall_time();
+
+      // Contact forces and their constraints, after the elements so that
+      // the assembly time excludes the contact search.
+      if (contact.active())
+        contact_changes +=
+          contact.assemble(triangulation.get_vertices(),
+                           du,
+                           constraints,
+                           assemble_matrix ? &system_matrix : nullptr,
+                           system_rhs,
+                           target_load);
 
       if (worst_status == 1)
         return IncrementOutcome::inverted_element;

@@ -2,8 +2,10 @@
 #include <deal.II/numerics/data_out.h>
 
 #include <deepdraw/fe/selective_reduced_quadrature.h>
+#include <deepdraw/geometry/tool_vtu.h>
 #include <deepdraw/problem/forming_problem.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -82,8 +84,13 @@ namespace deepdraw
                             "newton_iterations",
                             "cut_backs",
                             "force_residual",
+                            "contact_residual",
                             "plastic_points",
+                            "contact_changes",
+                            "stick_pairs",
+                            "slip_pairs",
                             "assembly_s",
+                            "contact_search_s",
                             "linear_solve_s",
                             "output_s",
                             "wall_s"});
@@ -92,12 +99,23 @@ namespace deepdraw
                         "load",
                         "iteration",
                         "force_residual",
+                        "contact_residual",
                         "correction"});
       std::vector<std::string> columns = {"load"};
       for (const unsigned int face : reaction_faces)
         for (const char *component : {"_Fx", "_Fy", "_Fz"})
           columns.push_back(face_names[face] + component);
       reactions_file.open(directory + "/reactions.csv", columns);
+      if (contact.active())
+        {
+          // Force of each tool on the sheet (N) and its translation (mm).
+          std::vector<std::string> tool_columns = {"load"};
+          for (const ToolDefinition &tool : contact.tool_definitions())
+            for (const char *suffix :
+                 {"_Fx", "_Fy", "_Fz", "_ux", "_uy", "_uz"})
+              tool_columns.push_back(tool.name + suffix);
+          tools_file.open(directory + "/tools.csv", tool_columns);
+        }
       write_increment_tables(0.);
     }
 
@@ -114,6 +132,20 @@ namespace deepdraw
             row.push_back(reaction[c]);
         }
       reactions_file.add_row(row);
+
+      if (contact.active())
+        {
+          std::vector<double>             tool_row = {load};
+          const std::vector<Tensor<1, 3>> forces   = contact.tool_forces();
+          for (unsigned int k = 0; k < forces.size(); ++k)
+            {
+              for (unsigned int c = 0; c < 3; ++c)
+                tool_row.push_back(forces[k][c]);
+              for (unsigned int c = 0; c < 3; ++c)
+                tool_row.push_back(contact.tools()[k].translation()[c]);
+            }
+          tools_file.add_row(tool_row);
+        }
     }
 
 
@@ -178,6 +210,54 @@ namespace deepdraw
       data_out.add_data_vector(scalar_dof_handler,
                                thickness_strain,
                                "thickness_strain");
+
+      // Contact fields at the surface nodes: status (0 open, 1 stick,
+      // 2 slip), normal gap, contact pressure and friction stress (nodal
+      // forces over the node's share of the sheet surface).
+      Vector<double> contact_status(scalar_dof_handler.n_dofs()),
+        contact_gap(scalar_dof_handler.n_dofs()),
+        contact_pressure(scalar_dof_handler.n_dofs());
+      std::vector<Vector<double>> friction_stress(
+        3, Vector<double>(scalar_dof_handler.n_dofs()));
+      if (contact.active())
+        {
+          const std::vector<ContactCoupling::NodalContact> nodal =
+            contact.nodal_contact(triangulation.n_vertices());
+          std::vector<double> area(triangulation.n_vertices(), 0.);
+          for (const auto &cell : triangulation.active_cell_iterators())
+            for (const auto &face : cell->face_iterators())
+              if (face->at_boundary()
+                  && (face->boundary_id() == 4 || face->boundary_id() == 5))
+                for (const unsigned int v : face->vertex_indices())
+                  area[face->vertex_index(v)] += face->measure() / 4.;
+          for (const auto &cell : scalar_dof_handler.active_cell_iterators())
+            for (const unsigned int v : cell->vertex_indices())
+              {
+                const unsigned int vertex = cell->vertex_index(v);
+                const auto         dof    = cell->vertex_dof_index(v, 0);
+                contact_status[dof]       = nodal[vertex].status;
+                contact_gap[dof]          = nodal[vertex].gap;
+                if (area[vertex] > 0.)
+                  {
+                    contact_pressure[dof] =
+                      nodal[vertex].normal_force / area[vertex];
+                    for (unsigned int d = 0; d < 3; ++d)
+                      friction_stress[d][dof] =
+                        nodal[vertex].friction_force[d] / area[vertex];
+                  }
+              }
+          data_out.add_data_vector(scalar_dof_handler,
+                                   contact_status,
+                                   "contact_status");
+          data_out.add_data_vector(scalar_dof_handler, contact_gap, "contact_gap");
+          data_out.add_data_vector(scalar_dof_handler,
+                                   contact_pressure,
+                                   "contact_pressure");
+          for (unsigned int d = 0; d < 3; ++d)
+            data_out.add_data_vector(scalar_dof_handler,
+                                     friction_stress[d],
+                                     std::string("friction_stress_") + axes[d]);
+        }
       for (unsigned int p = 0; p < 6; ++p)
         {
           const std::string suffix =
@@ -211,7 +291,21 @@ namespace deepdraw
         data_out.write_vtu(out);
       }
       std::filesystem::rename(path + ".tmp", path);
-      pvd->add_step(load, {name.str()});
+      std::vector<std::string> parts = {name.str()};
+      for (const geometry::RigidTool &tool : contact.tools())
+        {
+          std::string tool_name = tool.name();
+          std::replace(tool_name.begin(), tool_name.end(), ' ', '_');
+          std::ostringstream tool_file;
+          tool_file << "tool_" << tool_name << "-" << std::setw(5)
+                    << std::setfill('0') << output_step << ".vtu";
+          const std::string tool_path =
+            output_parameters.output_directory + "/" + tool_file.str();
+          geometry::write_vtu(tool, tool_path + ".tmp", 8);
+          std::filesystem::rename(tool_path + ".tmp", tool_path);
+          parts.push_back(tool_file.str());
+        }
+      pvd->add_step(load, parts);
       ++output_step;
     }
   } // namespace problem

@@ -27,7 +27,9 @@
 #include <deepdraw/io/pvd_record.h>
 #include <deepdraw/material/hill_plasticity.h>
 #include <deepdraw/material/material_parameters.h>
+#include <deepdraw/geometry/square_cup_tools.h>
 #include <deepdraw/problem/blank_geometry.h>
+#include <deepdraw/problem/contact_coupling.h>
 #include <deepdraw/problem/prescribed_displacements.h>
 #include <deepdraw/problem/quadrature_point_update.h>
 #include <deepdraw/solver/increment_control.h>
@@ -59,7 +61,10 @@ namespace deepdraw
       declare_parameters(ParameterHandler &prm);
 
       // Parses and checks all parameters (throws InputError); writes nothing.
-      explicit FormingProblem(ParameterHandler &prm);
+      // Relative file names in the parameters (tool files) are taken from
+      // input_directory.
+      explicit FormingProblem(ParameterHandler  &prm,
+                              const std::string &input_directory = ".");
 
       // Runs all increments, writing results as they converge. Throws
       // RunFailure if an increment cannot be completed; what was written
@@ -100,6 +105,14 @@ namespace deepdraw
       // Sum of the internal forces over the dofs of a face (reaction).
       Tensor<1, 3>
       face_reaction(unsigned int boundary_id) const;
+      // Internal nodal forces f_int of the last assembly (after run(): of
+      // the last converged increment); at constrained dofs these are the
+      // nodal reactions, e.g. to compute a moment on a face.
+      const Vector<double> &
+      get_internal_force() const;
+      // Quadrature points that yielded in the last assembly.
+      unsigned int
+      last_plastic_points() const;
       // Current thickness of each through-thickness column.
       const std::vector<double> &
       get_column_thickness() const;
@@ -110,6 +123,13 @@ namespace deepdraw
       // Newton history of the last increment: relative force residuals.
       const std::vector<double> &
       last_residuals() const;
+
+      // Contact with the tools (inactive if no tool is declared).
+      const ContactCoupling &
+      get_contact() const;
+      // Number of displacement unknowns (they come first in the system).
+      types::global_dof_index
+      n_displacement_dofs() const;
 
     private:
       struct CellGeometry
@@ -167,6 +187,8 @@ namespace deepdraw
       solver::NewtonParameters              newton_parameters;
       solver::LinearSolverParameters        linear_solver_parameters;
       io::OutputParameters                  output_parameters;
+      geometry::SquareCupToolParameters     square_cup_tool_parameters;
+      ContactCoupling                       contact;
       bool                                  selective_reduced_integration = true;
 
       std::unique_ptr<material::HillPlasticity> material;
@@ -200,7 +222,12 @@ namespace deepdraw
       Vector<double>       system_rhs;
       Vector<double>       internal_force;
       Vector<double>       total_displacement;
+      // The Newton unknowns: displacement increment (first
+      // n_displacement_dofs entries), then contact forces and tool
+      // positions (absolute values).
       Vector<double>       displacement_increment;
+      Vector<double>       converged_solution;
+      double               target_load = 0.;
 
       std::vector<QuadraturePointHistory> history;
       std::vector<QuadraturePointHistory> trial_history;
@@ -210,6 +237,8 @@ namespace deepdraw
       // Results
       std::vector<double> column_thickness;
       std::vector<double> residual_history;
+      std::vector<double> contact_residual_history;
+      unsigned int        contact_changes = 0;
       unsigned int        n_plastic_points = 0;
 
       // Timers of the current increment (seconds)
@@ -222,6 +251,7 @@ namespace deepdraw
       io::CsvFile                    statistics_file;
       io::CsvFile                    newton_file;
       io::CsvFile                    reactions_file;
+      io::CsvFile                    tools_file;
       std::vector<unsigned int>      reaction_faces;
       unsigned int                   output_step = 0;
       unsigned int                   increment_number = 0;

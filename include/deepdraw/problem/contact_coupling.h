@@ -1,0 +1,184 @@
+// Frictional contact of the sheet with rigid tools in the monolithic
+// (u, lambda, z) system (DESIGN §1.4, reference Eqs. 12 and 19).
+//
+// Every surface node of the sheet facing a tool forms a contact pair with
+// it; each pair owns an unknown contact force lambda (3 components, the
+// force of the tool on the node, N). A force-controlled tool adds one
+// unknown, its position z along its axis a, with the equation
+// sum_pairs a . P = F(t). The tools are declared in four slots,
+// subsection Contact / subsection Tool 1 ... Tool 4.
+#ifndef deepdraw_problem_contact_coupling_h
+#define deepdraw_problem_contact_coupling_h
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/tensor.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <deepdraw/contact/alart_curnier_law.h>
+#include <deepdraw/contact/contact_pair.h>
+#include <deepdraw/contact/contact_parameters.h>
+#include <deepdraw/geometry/rigid_tool.h>
+#include <deepdraw/geometry/square_cup_tools.h>
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace deepdraw
+{
+  namespace problem
+  {
+    using namespace dealii;
+
+    constexpr unsigned int n_tool_slots = 4;
+
+    struct ToolDefinition
+    {
+      std::string name;
+      // "square cup punch", "square cup die", "square cup blank holder",
+      // or "file" (then `file`).
+      std::string geometry;
+      std::string file;
+      // Boundary id of the sheet face it touches: 4 bottom, 5 top.
+      unsigned int sheet_face = 5;
+      bool         force_controlled = false;
+      // Displacement control: translation (3 expressions of t, mm).
+      std::shared_ptr<FunctionParser<1>> translation;
+      // Force control: axis a (unit) and force F(t) in N along a.
+      Tensor<1, 3>                        axis;
+      std::shared_ptr<FunctionParser<1>> force;
+    };
+
+    class ContactCoupling
+    {
+    public:
+      static void
+      declare_parameters(ParameterHandler &prm);
+      // Reads subsection Contact; tool files are relative to
+      // prm_directory. Throws InputError naming the parameter or file.
+      void
+      parse_parameters(ParameterHandler &prm, const std::string &prm_directory);
+
+      bool
+      active() const;
+
+      // Builds the tools (square-cup builder tools need the geometry of
+      // subsection Tools and the sheet thickness).
+      void
+      create_tools(const geometry::SquareCupToolParameters &square_cup,
+                   double                                   sheet_thickness);
+
+      // One pair per (vertex on the tool's sheet face, tool). vertex_dofs
+      // gives the 3 displacement dofs of a vertex; unknowns of the
+      // multipliers and tool positions are numbered from first_index.
+      // Returns the number of unknowns added.
+      unsigned int
+      create_pairs(const std::vector<std::vector<unsigned int>> &face_vertices,
+                   const std::vector<std::array<types::global_dof_index, 3>>
+                                &vertex_dofs,
+                   types::global_dof_index first_index,
+                   double                  youngs_modulus,
+                   double                  element_size);
+
+      void
+      add_sparsity(DynamicSparsityPattern &dsp) const;
+
+      // Initial values of the contact unknowns (lambda = 0, z = 0).
+      void
+      initialise_unknowns(Vector<double> &solution) const;
+
+      // Places the displacement-controlled tools at load t_new and
+      // remembers where every tool was at t_old.
+      void
+      start_increment(double old_load, double new_load);
+
+      // Adds the contact contributions for the current iterate:
+      // `positions` are the vertex positions at t (start of increment),
+      // `solution` holds du (displacement part), lambda and z. Adds -r to
+      // rhs and dr/dx to the matrix (if matrix != nullptr) through the
+      // constraints; adds the contact forces P to contact_force (by u dof).
+      // Returns the number of pairs whose state changed since the last call.
+      unsigned int
+      assemble(const std::vector<Point<3>>      &positions,
+               const Vector<double>             &solution,
+               const AffineConstraints<double>  &constraints,
+               SparseMatrix<double>             *matrix,
+               Vector<double>                   &rhs,
+               double                            new_load);
+
+      // sqrt(sum |r F_sup|^2 + sum (holder residual)^2): a force (N).
+      double
+      residual_norm(const Vector<double> &rhs) const;
+
+      // Remembers the converged tool positions.
+      void
+      commit(const Vector<double> &solution);
+
+      // For output, after assemble(): per vertex (index of the vertex)
+      // accumulated over its pairs.
+      struct NodalContact
+      {
+        unsigned int status       = 0; // 0 open, 1 stick, 2 slip
+        double       normal_force = 0.;
+        Tensor<1, 3> friction_force;
+        double       gap          = std::numeric_limits<double>::max();
+      };
+      std::vector<NodalContact>
+      nodal_contact(unsigned int n_vertices) const;
+
+      // Force of each tool on the sheet (sum of P over its pairs), and
+      // translation of each tool.
+      std::vector<Tensor<1, 3>>
+      tool_forces() const;
+      const std::vector<geometry::RigidTool> &
+      tools() const;
+      const std::vector<ToolDefinition> &
+      tool_definitions() const;
+      // Counts of pairs in stick and slip after the last assemble().
+      unsigned int
+      n_stick() const;
+      unsigned int
+      n_slip() const;
+      // Pairs that were penetrating at the start of the run.
+      unsigned int
+      n_initial_penetrations(const std::vector<Point<3>> &positions) const;
+      double
+      search_time() const;
+
+    private:
+      struct Pair
+      {
+        unsigned int                         vertex;
+        unsigned int                         tool;
+        std::array<types::global_dof_index, 3> u_dofs;
+        types::global_dof_index              first_multiplier;
+        double                               augmentation;
+        contact::ContactPairResult           result;
+        bool                                 found = false;
+      };
+
+      contact::ContactParameters             parameters;
+      double                                 search_distance = 2.;
+      std::vector<ToolDefinition>            definitions;
+      std::vector<geometry::RigidTool>       tool_list;
+      // Unknown index of the position of each force-controlled tool
+      // (invalid for displacement control).
+      std::vector<types::global_dof_index>   position_dof;
+      std::vector<double>                    position_at_start; // z_n
+      std::vector<Tensor<1, 3>>              translation_at_start;
+      std::vector<Tensor<1, 3>>              translation_at_end;
+      std::vector<Pair>                      pairs;
+      std::unique_ptr<contact::AlartCurnierLaw> law;
+      double                                 force_regularisation = 1.;
+      double                                 total_search_time    = 0.;
+    };
+  } // namespace problem
+} // namespace deepdraw
+
+#endif
