@@ -1,11 +1,12 @@
 // Element residual and exact tangent of the updated-Lagrangian hexahedron
 // with selective reduced integration (DESIGN §1.1, §1.3):
-//   r_i = sum_q w_q Gbar_i(q) : P_q,   K_ij = sum_q w_q Gbar_i : dP/dH : Gbar_j,
-// with Gbar_i = e_c (x) g_a + 1/3 (g_a^centre[c] - g_a[c]) I the gradient of
-// the shape function i = (node a, component c) whose trace is replaced by the
-// trace at the cell centre (reference Eqs. 17-18; full integration: no
-// correction). Gradients are with respect to x_t and computed once per
-// increment.
+//   r_i = sum_q w_q Gbar_i(q) : P_q,   K_ij = sum_q w_q Gbar_i : dP/dH :
+//   Gbar_j,
+// with Gbar_i = e_c (x) g_a + 1/3 (gbar_a[c] - g_a[c]) I the gradient of
+// the shape function i = (node a, component c) whose trace is replaced by a
+// constant one, gbar_a = (1/V) int g_a dV (reference Eqs. 17-18 in the mean
+// dilatation form; full integration: no correction). Gradients are with
+// respect to x_t and computed once per increment.
 #include <deal.II/base/timer.h>
 #include <deal.II/base/work_stream.h>
 
@@ -32,15 +33,29 @@ namespace deepdraw
         {
           fe_values.reinit(cell);
           CellGeometry &geometry = cell_geometry[cell->active_cell_index()];
+          // The constant volumetric gradient is the volume average
+          // (1/V) int grad N_a dV (mean dilatation), not the gradient at the
+          // centre: the two agree on parallelepipeds, but only the average
+          // passes the patch test on warped hexahedra (the SRI term of an
+          // interior node's residual is tr P / 3 sum_cells
+          // (V gbar_a - int grad N_a), zero only if gbar_a is the average;
+          // tests/element/patch_test.cc). 2x2x2 Gauss integrates grad N_a
+          // exactly on a trilinear cell.
+          double volume = 0.;
+          geometry.mean_gradient.fill(Tensor<1, 3>());
           for (unsigned int q = 0; q < fe::n_weighted_points; ++q)
             {
               geometry.JxW[q] = fe_values.JxW(q);
+              volume += geometry.JxW[q];
               for (unsigned int a = 0; a < 8; ++a)
+              {
                 geometry.gradient[q * 8 + a] = fe_values.shape_grad(a, q);
+                geometry.mean_gradient[a]
+                  += geometry.JxW[q] * geometry.gradient[q * 8 + a];
+              }
             }
           for (unsigned int a = 0; a < 8; ++a)
-            geometry.centre_gradient[a] =
-              fe_values.shape_grad(a, fe::centre_point);
+            geometry.mean_gradient[a] /= volume;
         }
     }
 
@@ -90,13 +105,15 @@ namespace deepdraw
         for (unsigned int i = 0; i < 24; ++i)
           u[local_node[i]][local_component[i]] = du[copy.dofs[i]];
 
-        // Trace of H at the centre: the volumetric part used at every point.
-        double centre_divergence = 0.;
+        // Cell-average trace of H: the volumetric part used at every point.
+        double mean_divergence = 0.;
         for (unsigned int a = 0; a < 8; ++a)
-          centre_divergence += u[a] * geometry.centre_gradient[a];
+          mean_divergence += u[a] * geometry.mean_gradient[a];
 
         copy.matrix   = 0.;
         copy.residual = 0.;
+        // Counted per cell: one atomic update instead of one per point.
+        unsigned int cell_plastic_points = 0;
         Tensor<4, 3> A;
         Tensor<2, 3> P;
         for (unsigned int q = 0; q < fe::n_weighted_points; ++q)
@@ -107,7 +124,7 @@ namespace deepdraw
               H += outer_product(u[a], g[a]);
             if (sri)
               {
-                const double correction = (centre_divergence - trace(H)) / 3.;
+                const double correction = (mean_divergence - trace(H)) / 3.;
                 for (unsigned int d = 0; d < 3; ++d)
                   H[d][d] += correction;
               }
@@ -134,18 +151,17 @@ namespace deepdraw
                   }
                 return;
               }
-            if (plastic)
-              ++plastic_points;
+              cell_plastic_points += plastic;
 
-            const double w = geometry.JxW[q];
-            // beta_i: trace correction of Gbar_i; Gbar_i : T =
-            //   T[c] . g_a + beta_i tr T.
-            double beta[24];
-            for (unsigned int i = 0; i < 24; ++i)
+              const double w = geometry.JxW[q];
+              // beta_i: trace correction of Gbar_i; Gbar_i : T =
+              //   T[c] . g_a + beta_i tr T.
+              double beta[24];
+              for (unsigned int i = 0; i < 24; ++i)
               {
                 const unsigned int a = local_node[i], c = local_component[i];
-                beta[i] =
-                  sri ? (geometry.centre_gradient[a][c] - g[a][c]) / 3. : 0.;
+                beta[i]
+                  = sri ? (geometry.mean_gradient[a][c] - g[a][c]) / 3. : 0.;
               }
             const double trace_P = trace(P);
             for (unsigned int i = 0; i < 24; ++i)
@@ -156,29 +172,44 @@ namespace deepdraw
             if (!assemble_matrix)
               continue;
 
-            // A_trace[i][j] = sum_m A[i][j][m][m]
-            Tensor<2, 3> A_trace;
-            for (unsigned int i = 0; i < 3; ++i)
-              for (unsigned int j = 0; j < 3; ++j)
-                A_trace[i][j] = A[i][j][0][0] + A[i][j][1][1] + A[i][j][2][2];
+            // K_ij += w Gbar_i : A : Gbar_j in two sparse steps (Gbar_j has
+            // 3 + 3 non-zeros): T_j = w A : Gbar_j, stored as
+            // T[c][m][j] = (T_j)_cm so that the update of a row i = (a, c),
+            //   K_ij += sum_m g_a[m] T[c][m][j] + beta_i tr T_j,
+            // runs contiguously over j.
+            double A_trace[3][3]; // sum_n A[c][m][n][n]
+            for (unsigned int c = 0; c < 3; ++c)
+              for (unsigned int m = 0; m < 3; ++m)
+                A_trace[c][m] = A[c][m][0][0] + A[c][m][1][1] + A[c][m][2][2];
+            double T[3][3][24], trace_T[24];
             for (unsigned int j = 0; j < 24; ++j)
               {
-                const unsigned int b = local_node[j], d = local_component[j];
-                // T = A : Gbar_j
-                Tensor<2, 3> T;
-                for (unsigned int k = 0; k < 3; ++k)
-                  for (unsigned int l = 0; l < 3; ++l)
-                    T[k][l] = A[k][l][d] * g[b] + beta[j] * A_trace[k][l];
-                const double trace_T = trace(T);
-                for (unsigned int i = 0; i < 24; ++i)
+                const unsigned int  b = local_node[j], d = local_component[j];
+                const Tensor<1, 3> &g_b = g[b];
+                for (unsigned int c = 0; c < 3; ++c)
+                  for (unsigned int m = 0; m < 3; ++m)
                   {
-                    const unsigned int a = local_node[i], c = local_component[i];
-                    copy.matrix(i, j) +=
-                      w * (T[c] * g[a] + beta[i] * trace_T);
+                    const Tensor<1, 3> &A_cmd = A[c][m][d];
+                    T[c][m][j]
+                      = w
+                        * (A_cmd[0] * g_b[0] + A_cmd[1] * g_b[1]
+                           + A_cmd[2] * g_b[2] + beta[j] * A_trace[c][m]);
                   }
+                trace_T[j] = T[0][0][j] + T[1][1][j] + T[2][2][j];
+              }
+              for (unsigned int i = 0; i < 24; ++i)
+              {
+                const unsigned int a = local_node[i], c = local_component[i];
+                const double       g0 = g[a][0], g1 = g[a][1], g2 = g[a][2];
+                const double       beta_i = beta[i];
+                double            *K_i    = &copy.matrix(i, 0);
+                for (unsigned int j = 0; j < 24; ++j)
+                  K_i[j] += g0 * T[c][0][j] + g1 * T[c][1][j] + g2 * T[c][2][j]
+                            + beta_i * trace_T[j];
               }
           }
-        copy.active = true;
+          plastic_points += cell_plastic_points;
+          copy.active = true;
       };
 
       auto copier = [&](const AssemblyCopy &copy) {

@@ -135,9 +135,10 @@ namespace deepdraw
       struct CellGeometry
       {
         // Gradients wrt x_t of the 8 scalar shape functions at the 8 Gauss
-        // points, and at the cell centre; JxW of the Gauss points.
+        // points, and their volume average (the constant volumetric
+        // gradient of SRI); JxW of the Gauss points.
         std::array<Tensor<1, 3>, 64> gradient;
-        std::array<Tensor<1, 3>, 8>  centre_gradient;
+        std::array<Tensor<1, 3>, 8>  mean_gradient;
         std::array<double, 8>        JxW;
       };
 
@@ -214,6 +215,9 @@ namespace deepdraw
       // Constrained dofs with their prescribed displacement entry.
       std::vector<std::pair<types::global_dof_index, const PrescribedDisplacement *>>
                                 prescribed_dofs;
+      // Contact-force components along prescribed displacement components
+      // (held at zero, see ContactCoupling::multiplier_partners).
+      std::vector<types::global_dof_index> constrained_multipliers;
       AffineConstraints<double> homogeneous_constraints;
       AffineConstraints<double> predictor_constraints;
 

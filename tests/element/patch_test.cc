@@ -1,0 +1,215 @@
+// Patch test (DESIGN §4) on a distorted mesh: an affine displacement
+// u = t A X prescribed on all six faces of the unit cube must be reproduced
+// exactly at every interior node, with the same Cauchy stress in every cell,
+// for selective reduced and for full integration.
+//
+// Why it must hold exactly: with u affine, every element sees the same
+// H = grad_{x_t} du in every increment (x_t is an affine image of X), so the
+// same stress history; P uniform gives interior nodal forces
+// P . sum_cells int grad N_a = 0 (2x2x2 Gauss integrates grad N_a exactly on a
+// trilinear hexahedron). The SRI correction (tr H_centre - tr H)/3 vanishes
+// for uniform H, and its contribution to the residual of an interior node,
+// tr P / 3 sum_cells (V_e gbar_a - int grad N_a), vanishes when gbar_a is the
+// volume-averaged gradient (Hughes' mean dilatation): on a distorted (warped)
+// hexahedron the gradient at the centre differs from that average, and the
+// patch test then fails at the level of the distortion.
+//
+// Two cases: an elastic one (|A| = 1e-4), also compared with small-strain
+// Hooke's law, and a plastic one with 10 % strains and a rotation, where the
+// SRI and full stresses must coincide too (the SRI correction is zero).
+#include "test_utilities.h"
+
+#include <deal.II/base/mpi.h>
+#include <deepdraw/problem/forming_problem.h>
+#include <sstream>
+
+using namespace dealii;
+using namespace deepdraw;
+
+namespace
+{
+  std::string
+  prm_text(const Tensor<2, 3> &A,
+           const std::string  &integration,
+           const double        increment)
+  {
+    const char *faces[6] = {"xmin", "xmax", "ymin", "ymax", "zmin", "zmax"};
+    const char *components[3] = {"ux", "uy", "uz"};
+    std::ostringstream bc;
+    bc.precision(17);
+    for (const char *face : faces)
+      for (unsigned int i = 0; i < 3; ++i)
+        bc << face << ": " << components[i] << " = t*(" << A[i][0] << "*x + "
+           << A[i][1] << "*y + " << A[i][2] << "*z); ";
+    std::string conditions = bc.str();
+    conditions.erase(conditions.size() - 2);
+
+    return "subsection Geometry\n"
+           "  set Length = 1\n  set Width = 1\n  set Thickness = 1\n"
+           "  set Elements along x = 4\n  set Elements along y = 4\n"
+           "  set Layers through thickness = 4\n  set Symmetry planes =\n"
+           "  set Mesh distortion = 0.25\nend\n"
+           "subsection Finite element\n  set Integration = "
+           + integration
+           + "\nend\n"
+             "subsection Boundary conditions\n"
+             "  set Prescribed displacements = "
+           + conditions
+           + "\nend\n"
+             "subsection Load stepping\n  set Final load = 1\n"
+             "  set Initial increment = "
+           + std::to_string(increment)
+           + "\n  set Maximum increment = " + std::to_string(increment)
+           + "\nend\n"
+             // Converge to round-off: the test measures the discrete
+             // solution, not the Newton tolerance.
+             "subsection Newton\n  set Force tolerance = 1e-12\n"
+             "  set Correction tolerance = 1e-12\nend\n"
+             "subsection Output\n  set Output directory = patch-test-output\n"
+             "  set Write VTU = false\nend\n";
+  }
+
+  struct Result
+  {
+    std::vector<Tensor<2, 3>> stress;
+    double                    min_plastic_strain;
+  };
+
+  Result
+  run_patch_test(const Tensor<2, 3> &A,
+                 const std::string  &integration,
+                 const double        increment)
+  {
+    std::cout << integration << " integration, |A| = " << A.norm() << std::endl;
+    ParameterHandler prm;
+    problem::FormingProblem::declare_parameters(prm);
+    prm.parse_input_from_string(prm_text(A, integration, increment));
+    problem::FormingProblem forming_problem(prm);
+    forming_problem.run();
+    std::cout.precision(6); // run() leaves it at 3
+
+    // Nodal displacements against u = A X at the final load t = 1.
+    const auto       &X     = forming_problem.get_initial_vertices();
+    const auto       &u     = forming_problem.get_total_displacement();
+    double            error = 0., scale = 0.;
+    unsigned int      n_interior = 0, n_distorted = 0;
+    std::vector<bool> seen(X.size(), false);
+    for (const auto &cell :
+         forming_problem.get_dof_handler().active_cell_iterators())
+      for (const unsigned int v : cell->vertex_indices())
+      {
+        const unsigned int vertex = cell->vertex_index(v);
+        if (seen[vertex])
+          continue;
+        seen[vertex]                = true;
+        const Tensor<1, 3> expected = A * X[vertex];
+        scale                       = std::max(scale, expected.norm());
+        bool interior               = true;
+        for (unsigned int d = 0; d < 3; ++d)
+          interior &= X[vertex][d] > 1e-12 && X[vertex][d] < 1. - 1e-12;
+        if (!interior)
+          continue;
+        ++n_interior;
+        // Vertices of the regular mesh lie on multiples of 1/4.
+        for (unsigned int d = 0; d < 3; ++d)
+          if (std::abs(4. * X[vertex][d] - std::round(4. * X[vertex][d]))
+              > 1e-3)
+          {
+            ++n_distorted;
+            break;
+          }
+        for (unsigned int c = 0; c < 3; ++c)
+          error
+            = std::max(error,
+                       std::abs(u[cell->vertex_dof_index(v, c)] - expected[c]));
+      }
+    deepdraw_test::check_true("27 interior nodes, all moved by the distortion",
+                              n_interior == 27 && n_distorted == 27);
+    // Round-off of a Newton solution converged to 1e-12.
+    deepdraw_test::check_close("max interior |u - A X| / max |A X|",
+                               error / scale,
+                               0.,
+                               1e-10);
+
+    Result result;
+    result.stress       = forming_problem.cell_average_cauchy_stress();
+    double stress_error = 0.;
+    for (const Tensor<2, 3> &sigma : result.stress)
+      stress_error = std::max(stress_error, (sigma - result.stress[0]).norm());
+    deepdraw_test::check_close("max |sigma_cell - sigma_cell0| / |sigma_cell0|",
+                               stress_error / result.stress[0].norm(),
+                               0.,
+                               1e-10);
+    result.min_plastic_strain = std::numeric_limits<double>::max();
+    for (const auto &point : forming_problem.get_history())
+      result.min_plastic_strain
+        = std::min(result.min_plastic_strain,
+                   point.state.equivalent_plastic_strain);
+    return result;
+  }
+} // namespace
+
+int
+main(int argc, char *argv[])
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+
+  // Elastic: |A| ~ 1e-4, well below the yield strain of the default
+  // aluminium (C eps0^n / E = 132 / 71000 = 1.9e-3).
+  Tensor<2, 3> A_elastic;
+  const double entries_elastic[3][3]
+    = {{1.0, 0.4, -0.2}, {0.3, -0.5, 0.6}, {-0.1, 0.2, 0.8}};
+  for (unsigned int i = 0; i < 3; ++i)
+    for (unsigned int j = 0; j < 3; ++j)
+      A_elastic[i][j] = 1e-4 * entries_elastic[i][j];
+
+  // Hooke's law for eps = sym A; the finite-strain (Jaumann, updated
+  // Lagrangian) answer differs by O(|A|) = 1e-4 relative.
+  const double       E = 71000., nu = 0.33;
+  const double       lambda = E * nu / ((1. + nu) * (1. - 2. * nu));
+  const double       mu     = E / (2. * (1. + nu));
+  const Tensor<2, 3> eps    = 0.5 * (A_elastic + transpose(A_elastic));
+  const Tensor<2, 3> hooke
+    = lambda * trace(eps) * Tensor<2, 3>(unit_symmetric_tensor<3>())
+      + 2. * mu * eps;
+
+  for (const std::string integration : {"selective reduced", "full"})
+  {
+    const Result result = run_patch_test(A_elastic, integration, 0.5);
+    deepdraw_test::check_close("elastic: max epbar",
+                               -result.min_plastic_strain,
+                               0.,
+                               0.);
+    deepdraw_test::check_close("elastic: |sigma - Hooke| / |Hooke|",
+                               (result.stress[0] - hooke).norm() / hooke.norm(),
+                               0.,
+                               1e-3);
+  }
+
+  // Plastic: strains of 5 to 15 % with a rotation part, in four increments.
+  Tensor<2, 3> A_plastic;
+  const double entries_plastic[3][3]
+    = {{0.15, 0.08, -0.03}, {-0.04, -0.06, 0.05}, {0.02, -0.05, -0.07}};
+  for (unsigned int i = 0; i < 3; ++i)
+    for (unsigned int j = 0; j < 3; ++j)
+      A_plastic[i][j] = entries_plastic[i][j];
+  std::vector<Tensor<2, 3>> stress_by_integration;
+  for (const std::string integration : {"selective reduced", "full"})
+  {
+    const Result result = run_patch_test(A_plastic, integration, 0.25);
+    deepdraw_test::check_true("plastic: every point yielded (min epbar "
+                                + std::to_string(result.min_plastic_strain)
+                                + ")",
+                              result.min_plastic_strain > 0.01);
+    stress_by_integration.push_back(result.stress[0]);
+  }
+  // Uniform H: the SRI correction vanishes, both integrations compute the
+  // same material point history.
+  deepdraw_test::check_close(
+    "plastic: |sigma_SRI - sigma_full| / |sigma_full|",
+    (stress_by_integration[0] - stress_by_integration[1]).norm()
+      / stress_by_integration[1].norm(),
+    0.,
+    1e-10);
+  return deepdraw_test::summary();
+}
