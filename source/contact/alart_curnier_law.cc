@@ -68,7 +68,11 @@ namespace deepdraw
 
       // D = dP/dλ̂; then dP/dλ = D, dP/dĝ = −r D (λ̂ = λ − r ĝ).
       dealii::Tensor<2, 3> D;
-      if (a_N <= 0.)
+      // At the kink λ̂_N = 0 (a node touching with zero force, e.g. the
+      // initial state of a sheet lying on the die) both branches belong to
+      // the generalised Jacobian; the active one lets the tool carry load
+      // from the first iteration, so only λ̂_N < 0 is open.
+      if (a_N < 0.)
       {
         // Open: P = 0, F_sup = λ/r.
         result.state = ContactState::open;

@@ -11,6 +11,7 @@
 #include <deepdraw/problem/forming_problem.h>
 
 #include <cmath>
+#include <set>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -134,10 +135,9 @@ namespace deepdraw
                 owner[face->vertex_dof_index(v, entry.component)] = &entry;
       prescribed_dofs.assign(owner.begin(), owner.end());
 
-      homogeneous_constraints.clear();
+      std::set<types::global_dof_index> prescribed_set;
       for (const auto &[dof, entry] : prescribed_dofs)
-        homogeneous_constraints.add_line(dof);
-      homogeneous_constraints.close();
+        prescribed_set.insert(dof);
 
       // Contact unknowns follow the displacements (block system of
       // reference Eq. 19).
@@ -167,6 +167,18 @@ namespace deepdraw
                                              material_parameters.youngs_modulus,
                                              element_size);
         }
+
+      constrained_multipliers.clear();
+      for (const auto &[u_dof, multiplier] : contact.multiplier_partners())
+        if (prescribed_set.count(u_dof) > 0)
+          constrained_multipliers.push_back(multiplier);
+      homogeneous_constraints.clear();
+      homogeneous_constraints.reinit(complete_index_set(n_unknowns));
+      for (const auto &[dof, entry] : prescribed_dofs)
+        homogeneous_constraints.add_line(dof);
+      for (const auto dof : constrained_multipliers)
+        homogeneous_constraints.add_line(dof);
+      homogeneous_constraints.close();
 
       DynamicSparsityPattern displacement_dsp(dof_handler.n_dofs(),
                                               dof_handler.n_dofs());
@@ -222,6 +234,8 @@ namespace deepdraw
             prescribed.value(*entry, X, new_load)
               - prescribed.value(*entry, X, old_load));
         }
+      for (const auto dof : constrained_multipliers)
+        predictor_constraints.add_line(dof);
       predictor_constraints.close();
     }
 

@@ -89,6 +89,13 @@ namespace deepdraw
       void
       add_sparsity(DynamicSparsityPattern &dsp) const;
 
+      // (displacement dof, multiplier dof) of every pair and component: a
+      // multiplier component whose displacement component is prescribed
+      // (e.g. on a symmetry plane) is redundant with the constraint, which
+      // carries that force, and is constrained to zero by the caller.
+      std::vector<std::pair<types::global_dof_index, types::global_dof_index>>
+      multiplier_partners() const;
+
       // Initial values of the contact unknowns (lambda = 0, z = 0).
       void
       initialise_unknowns(Vector<double> &solution) const;
