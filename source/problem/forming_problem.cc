@@ -33,8 +33,8 @@ namespace deepdraw
                         "selective reduced",
                         Patterns::Selection("selective reduced|full"),
                         "'selective reduced': 2x2x2 Gauss points with the "
-                        "hydrostatic part of the gradients taken at the cell "
-                        "centre (no volumetric locking); 'full': plain "
+                        "hydrostatic part of the gradients replaced by its "
+                        "cell average (no volumetric locking); 'full': plain "
                         "2x2x2 Gauss integration (locks under isochoric "
                         "plastic flow; for comparison).");
       prm.leave_subsection();
@@ -281,16 +281,33 @@ namespace deepdraw
 
 
 
+    void
+    FormingProblem::prepare_increment(const double old_load,
+                                      const double new_load)
+    {
+      set_up_prescribed_increment(old_load, new_load);
+      if (contact.active())
+        contact.start_increment(old_load, new_load);
+      target_load = new_load;
+    }
+
+
+
+    const Vector<double> &
+    FormingProblem::get_newton_unknowns() const
+    {
+      return converged_solution;
+    }
+
+
+
     FormingProblem::IncrementOutcome
     FormingProblem::solve_increment(const double  old_load,
                                     const double  new_load,
                                     unsigned int &iterations)
     {
       const types::global_dof_index n_u = dof_handler.n_dofs();
-      set_up_prescribed_increment(old_load, new_load);
-      if (contact.active())
-        contact.start_increment(old_load, new_load);
-      target_load = new_load;
+      prepare_increment(old_load, new_load);
       // Displacement increment 0; contact forces and tool positions start
       // from their converged values.
       displacement_increment = converged_solution;
@@ -303,16 +320,32 @@ namespace deepdraw
       double         correction_norm   = 0.;
       double         smallest_residual = std::numeric_limits<double>::max();
 
+      // Merit of the current assembly: the out-of-balance forces of all
+      // equations, in N (free displacement rows, r F_sup, tool equations).
+      const auto merit = [&]() {
+        Vector<double> free_residual = system_rhs;
+        homogeneous_constraints.set_zero(free_residual);
+        const double force = block_norm(free_residual, n_u);
+        const double contact_force = contact.residual_norm(system_rhs);
+        return std::sqrt(force * force + contact_force * contact_force);
+      };
+      bool         assembled        = false;
+      unsigned int changes_reported = 0;
+
       for (iterations = 0;; ++iterations)
         {
           // Iteration 0 is the tangent predictor (reference Eq. 13): the
           // prescribed increment enters through inhomogeneous constraints.
           const AffineConstraints<double> &constraints =
             iterations == 0 ? predictor_constraints : homogeneous_constraints;
-          const IncrementOutcome status =
-            assemble(displacement_increment, constraints, true);
-          if (status != IncrementOutcome::converged)
-            return status;
+          if (!assembled)
+            {
+              const IncrementOutcome status =
+                assemble(displacement_increment, constraints, true);
+              if (status != IncrementOutcome::converged)
+                return status;
+            }
+          assembled = false;
 
           if (iterations > 0)
             {
@@ -338,7 +371,9 @@ namespace deepdraw
                                    double(iterations),
                                    force_residual,
                                    contact_residual,
-                                   relative_correction});
+                                   relative_correction,
+                                   double(contact_changes - changes_reported)});
+              changes_reported = contact_changes;
 
               if (!std::isfinite(force_residual)
                   || !std::isfinite(contact_residual))
@@ -374,7 +409,38 @@ namespace deepdraw
           correction_norm = block_norm(correction, n_u);
           if (!std::isfinite(correction.l2_norm()))
             return IncrementOutcome::not_a_number;
-          displacement_increment += correction;
+          if (iterations == 0 || newton_parameters.line_search_steps == 0)
+            {
+              displacement_increment += correction;
+              continue;
+            }
+
+          // Backtracking line search on the merit: semismooth Newton on
+          // many contact nodes can cycle between states; damping the step
+          // until the out-of-balance force decreases breaks the cycle and
+          // leaves full steps (quadratic convergence) near the solution.
+          const double   merit_now = merit();
+          const Vector<double> start  = displacement_increment;
+          double         step      = 1.;
+          for (unsigned int trial = 0;; ++trial)
+            {
+              displacement_increment = start;
+              displacement_increment.add(step, correction);
+              const IncrementOutcome status =
+                assemble(displacement_increment, homogeneous_constraints, true);
+              const bool acceptable =
+                status == IncrementOutcome::converged
+                && merit() <= (1. - 1e-4 * step) * merit_now;
+              if (acceptable || trial >= newton_parameters.line_search_steps)
+                {
+                  if (status != IncrementOutcome::converged)
+                    return status;
+                  break;
+                }
+              step *= 0.5;
+            }
+          correction_norm *= step;
+          assembled = true;
         }
     }
 

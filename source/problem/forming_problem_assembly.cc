@@ -282,10 +282,12 @@ namespace deepdraw
       AffineConstraints<double> none;
       none.close();
       const IncrementOutcome status = assemble(du, none, tangent != nullptr);
-      residual                      = internal_force;
+      // Without constraints rhs = -r for all equations, contact included.
+      residual = system_rhs;
+      residual *= -1.;
       if (tangent != nullptr)
         {
-          tangent->reinit(dof_handler.n_dofs(), dof_handler.n_dofs());
+          tangent->reinit(system_matrix.m(), system_matrix.n());
           for (unsigned int i = 0; i < system_matrix.m(); ++i)
             for (auto entry = system_matrix.begin(i);
                  entry != system_matrix.end(i);

@@ -100,7 +100,8 @@ namespace deepdraw
                         "iteration",
                         "force_residual",
                         "contact_residual",
-                        "correction"});
+                        "correction",
+                        "contact_changes"});
       std::vector<std::string> columns = {"load"};
       for (const unsigned int face : reaction_faces)
         for (const char *component : {"_Fx", "_Fy", "_Fz"})

@@ -16,21 +16,31 @@ namespace deepdraw
       prm.declare_entry("Force tolerance",
                         "1e-6",
                         Patterns::Double(0.),
-                        "Converged when the out-of-balance force norm over "
-                        "the free degrees of freedom, divided by the norm of "
-                        "the internal force vector (reactions included), is "
-                        "below this ...");
+                        "The increment has converged when the out-of-balance "
+                        "force norm over the free displacement unknowns, and "
+                        "that of the contact equations (r F_sup and the tool "
+                        "equations), each divided by the norm of the "
+                        "internal force vector (reactions included), are "
+                        "below this, and the correction criterion holds.");
       prm.declare_entry("Correction tolerance",
                         "1e-6",
                         Patterns::Double(0.),
-                        "... and the last Newton correction, divided by the "
-                        "displacement increment, is below this.");
+                        "The last Newton correction of the displacements, "
+                        "divided by the displacement increment, must be "
+                        "below this for convergence (from the second "
+                        "iteration after the predictor on).");
       prm.declare_entry("Divergence ratio",
                         "1e4",
                         Patterns::Double(1.),
                         "An increment counts as diverging when its residual "
                         "exceeds the smallest residual of the increment by "
                         "this factor.");
+      prm.declare_entry("Line search steps",
+                        "4",
+                        Patterns::Integer(0, 20),
+                        "Halvings of a Newton step allowed when it does not "
+                        "reduce the out-of-balance forces (0 switches the "
+                        "line search off).");
       prm.leave_subsection();
     }
 
@@ -44,6 +54,7 @@ namespace deepdraw
       force_tolerance      = prm.get_double("Force tolerance");
       correction_tolerance = prm.get_double("Correction tolerance");
       divergence_ratio     = prm.get_double("Divergence ratio");
+      line_search_steps    = prm.get_integer("Line search steps");
       prm.leave_subsection();
     }
   } // namespace solver

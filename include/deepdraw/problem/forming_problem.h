@@ -72,12 +72,23 @@ namespace deepdraw
       void
       run();
 
-      // Residual r(du) = f_int(du) over all displacement dofs and, if
-      // tangent != nullptr, dr/d(du), for the displacement increment du
-      // measured from the current configuration and committed history (no
-      // constraints applied). Used by the tangent verification test.
+      // Sets the prescribed displacements and the tool positions of the
+      // increment [old_load, new_load] as solve_increment() does, so that
+      // evaluate_residual() sees the same equations (tests).
+      void
+      prepare_increment(double old_load, double new_load);
+      // The Newton unknowns of the last converged increment: displacement
+      // increment, then contact forces and tool positions.
+      const Vector<double> &
+      get_newton_unknowns() const;
+
+      // Residual r(x) of all equations (displacement rows f_int - P,
+      // contact rows F_sup, tool rows) for the Newton unknowns x (see
+      // get_newton_unknowns), measured from the current configuration and
+      // committed history, without constraints; with tangent != nullptr
+      // also dr/dx. Used by the tangent verification tests.
       bool
-      evaluate_residual(const Vector<double> &displacement_increment,
+      evaluate_residual(const Vector<double> &unknowns,
                         Vector<double>       &residual,
                         FullMatrix<double>   *tangent);
 
