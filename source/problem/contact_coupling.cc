@@ -322,19 +322,6 @@ namespace deepdraw
 
 
     void
-    ContactCoupling::initialise_unknowns(Vector<double> &solution) const
-    {
-      for (const Pair &pair : pairs)
-        for (unsigned int c = 0; c < 3; ++c)
-          solution[pair.first_multiplier + c] = 0.;
-      for (const auto dof : position_dof)
-        if (dof != numbers::invalid_dof_index)
-          solution[dof] = 0.;
-    }
-
-
-
-    void
     ContactCoupling::start_increment(const double old_load,
                                      const double new_load)
     {

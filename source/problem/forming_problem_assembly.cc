@@ -234,7 +234,6 @@ namespace deepdraw
                       AssemblyCopy());
       n_plastic_points = plastic_points;
       assembly_time += timer.wall_time();
-      total_assembly_seconds += timer.wall_time();
 
       // Contact forces and their constraints, after the elements so that
       // the assembly time excludes the contact search.
@@ -262,14 +261,6 @@ namespace deepdraw
       AffineConstraints<double> none;
       none.close();
       return assemble(du, none, true) == IncrementOutcome::converged;
-    }
-
-
-
-    double
-    FormingProblem::total_assembly_time() const
-    {
-      return total_assembly_seconds;
     }
 
 

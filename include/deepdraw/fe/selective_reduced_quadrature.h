@@ -17,7 +17,6 @@ namespace deepdraw
 
     // Number of points that carry weight; the centre point follows them.
     constexpr unsigned int n_weighted_points = 8;
-    constexpr unsigned int centre_point      = 8;
 
     Quadrature<3>
     selective_reduced_quadrature();

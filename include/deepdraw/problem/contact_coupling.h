@@ -96,10 +96,6 @@ namespace deepdraw
       std::vector<std::pair<types::global_dof_index, types::global_dof_index>>
       multiplier_partners() const;
 
-      // Initial values of the contact unknowns (lambda = 0, z = 0).
-      void
-      initialise_unknowns(Vector<double> &solution) const;
-
       // Places the displacement-controlled tools at load t_new and
       // remembers where every tool was at t_old.
       void

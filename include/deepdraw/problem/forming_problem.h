@@ -97,9 +97,6 @@ namespace deepdraw
       // assembles); returns false if a point failed. For benchmarks.
       bool
       assemble_system(const Vector<double> &displacement_increment);
-      // Wall time of all assembly calls since construction (seconds).
-      double
-      total_assembly_time() const;
 
       const DoFHandler<3> &
       get_dof_handler() const;
@@ -257,9 +254,8 @@ namespace deepdraw
       unsigned int        n_plastic_points = 0;
 
       // Timers of the current increment (seconds)
-      double assembly_time       = 0.;
-      double solve_time          = 0.;
-      double total_assembly_seconds = 0.;
+      double assembly_time = 0.;
+      double solve_time    = 0.;
 
       // Output
       std::unique_ptr<io::PvdRecord> pvd;
