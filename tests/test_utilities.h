@@ -60,10 +60,10 @@ namespace deepdraw_test
   summary()
   {
     if (failure_count() == 0)
-      {
-        std::cout << "all checks passed" << std::endl;
-        return EXIT_SUCCESS;
-      }
+    {
+      std::cout << "all checks passed" << std::endl;
+      return EXIT_SUCCESS;
+    }
     std::cout << failure_count() << " check(s) FAILED" << std::endl;
     return EXIT_FAILURE;
   }

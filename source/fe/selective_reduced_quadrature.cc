@@ -1,5 +1,4 @@
 #include <deal.II/base/quadrature_lib.h>
-
 #include <deepdraw/fe/selective_reduced_quadrature.h>
 
 namespace deepdraw
@@ -9,9 +8,9 @@ namespace deepdraw
     Quadrature<3>
     selective_reduced_quadrature()
     {
-      const QGauss<3>          gauss(2);
-      std::vector<Point<3>>    points  = gauss.get_points();
-      std::vector<double>      weights = gauss.get_weights();
+      const QGauss<3>       gauss(2);
+      std::vector<Point<3>> points  = gauss.get_points();
+      std::vector<double>   weights = gauss.get_weights();
       points.emplace_back(0.5, 0.5, 0.5);
       weights.push_back(0.);
       return Quadrature<3>(points, weights);

@@ -1,6 +1,5 @@
-#include <deepdraw/io/csv_file.h>
-
 #include <cstdio>
+#include <deepdraw/io/csv_file.h>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
@@ -14,7 +13,6 @@ namespace deepdraw
     {
       open(filename, columns);
     }
-
 
 
     void
@@ -32,7 +30,6 @@ namespace deepdraw
     }
 
 
-
     void
     CsvFile::add_row(const std::vector<double> &values)
     {
@@ -44,7 +41,6 @@ namespace deepdraw
         row << (c ? "," : "") << values[c];
       file << row.str() << std::endl;
     }
-
 
 
     void

@@ -29,7 +29,6 @@ namespace deepdraw
     }
 
 
-
     void
     OutputParameters::parse_parameters(ParameterHandler &prm)
     {

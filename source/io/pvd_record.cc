@@ -1,6 +1,5 @@
 #include <deepdraw/io/csv_file.h>
 #include <deepdraw/io/pvd_record.h>
-
 #include <iomanip>
 #include <sstream>
 
@@ -9,13 +8,14 @@ namespace deepdraw
   namespace io
   {
     PvdRecord::PvdRecord(const std::string &filename)
-      : filename(filename)
-    {}
-
+        : filename(filename)
+    {
+    }
 
 
     void
-    PvdRecord::add_step(const double time, const std::vector<std::string> &parts)
+    PvdRecord::add_step(const double                    time,
+                        const std::vector<std::string> &parts)
     {
       for (unsigned int p = 0; p < parts.size(); ++p)
         entries.push_back({time, p, parts[p]});
@@ -27,8 +27,9 @@ namespace deepdraw
              "byte_order=\"LittleEndian\">\n"
              "  <Collection>\n";
       for (const Entry &entry : entries)
-        out << "    <DataSet timestep=\"" << entry.time << "\" group=\"\" part=\""
-            << entry.part << "\" file=\"" << entry.file << "\"/>\n";
+        out << "    <DataSet timestep=\"" << entry.time
+            << "\" group=\"\" part=\"" << entry.part << "\" file=\""
+            << entry.file << "\"/>\n";
       out << "  </Collection>\n</VTKFile>\n";
       write_file_atomically(filename, out.str());
     }

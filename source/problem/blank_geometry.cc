@@ -1,17 +1,15 @@
+#include <cmath>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
-
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/problem/blank_geometry.h>
-
-#include <cmath>
 
 namespace deepdraw
 {
   namespace problem
   {
-    const std::array<std::string, 6> face_names = {
-      {"xmin", "xmax", "ymin", "ymax", "zmin", "zmax"}};
+    const std::array<std::string, 6> face_names
+      = {{"xmin", "xmax", "ymin", "ymax", "zmin", "zmax"}};
 
     void
     BlankGeometry::declare_parameters(ParameterHandler &prm)
@@ -59,7 +57,6 @@ namespace deepdraw
     }
 
 
-
     void
     BlankGeometry::parse_parameters(ParameterHandler &prm)
     {
@@ -76,8 +73,8 @@ namespace deepdraw
       mesh_distortion          = prm.get_double("Mesh distortion");
       prm.leave_subsection();
 
-      const std::pair<const char *, double> extents[] = {
-        {"Length", length}, {"Width", width}, {"Thickness", thickness}};
+      const std::pair<const char *, double> extents[]
+        = {{"Length", length}, {"Width", width}, {"Thickness", thickness}};
       for (const auto &[name, value] : extents)
         if (!(value > 0.) || !std::isfinite(value))
           throw InputError("Geometry/" + std::string(name)
@@ -86,15 +83,13 @@ namespace deepdraw
     }
 
 
-
     void
     BlankGeometry::create_mesh(Triangulation<3>          &triangulation,
                                std::vector<unsigned int> &vertex_column,
                                std::vector<unsigned int> &vertex_layer) const
     {
-      const std::vector<unsigned int> repetitions = {elements_along_x,
-                                                     elements_along_y,
-                                                     layers_through_thickness};
+      const std::vector<unsigned int> repetitions
+        = {elements_along_x, elements_along_y, layers_through_thickness};
       GridGenerator::subdivided_hyper_rectangle(triangulation,
                                                 repetitions,
                                                 Point<3>(0, 0, 0),
@@ -103,19 +98,19 @@ namespace deepdraw
                                                          thickness),
                                                 /*colorize=*/true);
 
-      const double hx = length / elements_along_x;
-      const double hy = width / elements_along_y;
-      const double hz = thickness / layers_through_thickness;
+      const double hx       = length / elements_along_x;
+      const double hy       = width / elements_along_y;
+      const double hz       = thickness / layers_through_thickness;
       const auto  &vertices = triangulation.get_vertices();
       vertex_column.resize(vertices.size());
       vertex_layer.resize(vertices.size());
       for (unsigned int v = 0; v < vertices.size(); ++v)
-        {
-          const unsigned int i = std::lround(vertices[v][0] / hx);
-          const unsigned int j = std::lround(vertices[v][1] / hy);
-          vertex_column[v]     = i + j * (elements_along_x + 1);
-          vertex_layer[v]      = std::lround(vertices[v][2] / hz);
-        }
+      {
+        const unsigned int i = std::lround(vertices[v][0] / hx);
+        const unsigned int j = std::lround(vertices[v][1] / hy);
+        vertex_column[v]     = i + j * (elements_along_x + 1);
+        vertex_layer[v]      = std::lround(vertices[v][2] / hz);
+      }
 
       if (mesh_distortion > 0.)
         GridTools::distort_random(mesh_distortion,

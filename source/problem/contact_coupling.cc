@@ -1,13 +1,10 @@
+#include <cmath>
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
-
 #include <deal.II/lac/full_matrix.h>
-
 #include <deepdraw/geometry/tool_file.h>
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/problem/contact_coupling.h>
-
-#include <cmath>
 #include <fstream>
 
 namespace deepdraw
@@ -25,21 +22,21 @@ namespace deepdraw
       Tensor<1, 3>
       parse_direction(const std::string &text, const std::string &parameter)
       {
-        const std::vector<std::string> parts =
-          Utilities::split_string_list(text, ',');
+        const std::vector<std::string> parts
+          = Utilities::split_string_list(text, ',');
         Tensor<1, 3> direction;
         try
-          {
-            if (parts.size() != 3)
-              throw std::invalid_argument("count");
-            for (unsigned int d = 0; d < 3; ++d)
-              direction[d] = Utilities::string_to_double(parts[d]);
-          }
+        {
+          if (parts.size() != 3)
+            throw std::invalid_argument("count");
+          for (unsigned int d = 0; d < 3; ++d)
+            direction[d] = Utilities::string_to_double(parts[d]);
+        }
         catch (...)
-          {
-            throw InputError(parameter + " = '" + text
-                             + "': expected three numbers 'ax, ay, az'");
-          }
+        {
+          throw InputError(parameter + " = '" + text
+                           + "': expected three numbers 'ax, ay, az'");
+        }
         if (!(direction.norm() > 0.))
           throw InputError(parameter + " = '" + text
                            + "': the direction must not be zero");
@@ -53,22 +50,22 @@ namespace deepdraw
       {
         auto function = std::make_shared<FunctionParser<1>>(n_components);
         try
-          {
-            function->initialize("s,t",
-                                 text,
-                                 std::map<std::string, double>(),
-                                 /*time_dependent=*/true);
-            function->set_time(0.);
-            Vector<double> values(n_components);
-            function->vector_value(Point<1>(), values);
-          }
+        {
+          function->initialize("s,t",
+                               text,
+                               std::map<std::string, double>(),
+                               /*time_dependent=*/true);
+          function->set_time(0.);
+          Vector<double> values(n_components);
+          function->vector_value(Point<1>(), values);
+        }
         catch (...)
-          {
-            throw InputError(parameter + " = '" + text + "': expected "
-                             + std::to_string(n_components)
-                             + " expression(s) of the load t separated by "
-                               "';'");
-          }
+        {
+          throw InputError(parameter + " = '" + text + "': expected "
+                           + std::to_string(n_components)
+                           + " expression(s) of the load t separated by "
+                             "';'");
+        }
         return function;
       }
 
@@ -92,7 +89,6 @@ namespace deepdraw
     } // namespace
 
 
-
     void
     ContactCoupling::declare_parameters(ParameterHandler &prm)
     {
@@ -104,59 +100,58 @@ namespace deepdraw
                         "Nodes farther than this from a tool (mm) are not "
                         "projected onto it and count as open.");
       for (unsigned int slot = 0; slot < n_tool_slots; ++slot)
-        {
-          prm.enter_subsection(slot_name(slot));
-          prm.declare_entry("Name",
-                            "",
-                            Patterns::Anything(),
-                            "Name of the tool; an empty name leaves the slot "
-                            "unused.");
-          prm.declare_entry("Geometry",
-                            "file",
-                            Patterns::Selection("file|square cup punch|"
-                                                "square cup die|"
-                                                "square cup blank holder"),
-                            "Where the tool surface comes from: a tool file "
-                            "(see doc/tool_files.md) or one of the square-cup "
-                            "tools built from subsection Tools.");
-          prm.declare_entry("File",
-                            "",
-                            Patterns::Anything(),
-                            "Tool file (Geometry = file), relative to the "
-                            "directory of the parameter file.");
-          prm.declare_entry("Sheet surface",
-                            "top",
-                            Patterns::Selection("top|bottom"),
-                            "Surface of the sheet the tool acts on: every "
-                            "node of it forms a contact pair with the tool.");
-          prm.declare_entry("Control",
-                            "displacement",
-                            Patterns::Selection("displacement|force"),
-                            "'displacement': the tool follows Translation; "
-                            "'force': its position along Force direction is "
-                            "an unknown such that the contact forces on it "
-                            "add up to Force.");
-          prm.declare_entry("Translation",
-                            "0; 0; 0",
-                            Patterns::Anything(),
-                            "Displacement control: translation of the tool "
-                            "from its file position as three expressions of "
-                            "the load t separated by ';' (mm).");
-          prm.declare_entry("Force direction",
-                            "0, 0, -1",
-                            Patterns::Anything(),
-                            "Force control: axis along which the tool moves "
-                            "and presses on the sheet.");
-          prm.declare_entry("Force",
-                            "0",
-                            Patterns::Anything(),
-                            "Force control: force of the tool on the sheet "
-                            "along Force direction, an expression of t (N).");
-          prm.leave_subsection();
-        }
+      {
+        prm.enter_subsection(slot_name(slot));
+        prm.declare_entry("Name",
+                          "",
+                          Patterns::Anything(),
+                          "Name of the tool; an empty name leaves the slot "
+                          "unused.");
+        prm.declare_entry("Geometry",
+                          "file",
+                          Patterns::Selection("file|square cup punch|"
+                                              "square cup die|"
+                                              "square cup blank holder"),
+                          "Where the tool surface comes from: a tool file "
+                          "(see doc/tool_files.md) or one of the square-cup "
+                          "tools built from subsection Tools.");
+        prm.declare_entry("File",
+                          "",
+                          Patterns::Anything(),
+                          "Tool file (Geometry = file), relative to the "
+                          "directory of the parameter file.");
+        prm.declare_entry("Sheet surface",
+                          "top",
+                          Patterns::Selection("top|bottom"),
+                          "Surface of the sheet the tool acts on: every "
+                          "node of it forms a contact pair with the tool.");
+        prm.declare_entry("Control",
+                          "displacement",
+                          Patterns::Selection("displacement|force"),
+                          "'displacement': the tool follows Translation; "
+                          "'force': its position along Force direction is "
+                          "an unknown such that the contact forces on it "
+                          "add up to Force.");
+        prm.declare_entry("Translation",
+                          "0; 0; 0",
+                          Patterns::Anything(),
+                          "Displacement control: translation of the tool "
+                          "from its file position as three expressions of "
+                          "the load t separated by ';' (mm).");
+        prm.declare_entry("Force direction",
+                          "0, 0, -1",
+                          Patterns::Anything(),
+                          "Force control: axis along which the tool moves "
+                          "and presses on the sheet.");
+        prm.declare_entry("Force",
+                          "0",
+                          Patterns::Anything(),
+                          "Force control: force of the tool on the sheet "
+                          "along Force direction, an expression of t (N).");
+        prm.leave_subsection();
+      }
       prm.leave_subsection();
     }
-
 
 
     void
@@ -168,48 +163,46 @@ namespace deepdraw
       search_distance = prm.get_double("Search distance");
       definitions.clear();
       for (unsigned int slot = 0; slot < n_tool_slots; ++slot)
+      {
+        prm.enter_subsection(slot_name(slot));
+        const std::string prefix = "Contact/" + slot_name(slot) + "/";
+        ToolDefinition    tool;
+        tool.name = Utilities::trim(prm.get("Name"));
+        if (!tool.name.empty())
         {
-          prm.enter_subsection(slot_name(slot));
-          const std::string prefix = "Contact/" + slot_name(slot) + "/";
-          ToolDefinition    tool;
-          tool.name = Utilities::trim(prm.get("Name"));
-          if (!tool.name.empty())
-            {
-              tool.geometry = prm.get("Geometry");
-              tool.file     = Utilities::trim(prm.get("File"));
-              if (tool.geometry == "file")
-                {
-                  if (tool.file.empty())
-                    throw InputError(prefix
-                                     + "File: a tool file is needed when "
-                                       "Geometry = file");
-                  if (tool.file[0] != '/')
-                    tool.file = prm_directory + "/" + tool.file;
-                  if (!std::ifstream(tool.file))
-                    throw InputError(prefix + "File: cannot open the tool "
-                                              "file '"
-                                     + tool.file + "'");
-                }
-              tool.sheet_face       = prm.get("Sheet surface") == "top" ? 5 : 4;
-              tool.force_controlled = prm.get("Control") == "force";
-              tool.translation =
-                parse_function_of_load(prm.get("Translation"),
-                                       3,
-                                       prefix + "Translation");
-              tool.axis  = parse_direction(prm.get("Force direction"),
-                                          prefix + "Force direction");
-              tool.force = parse_function_of_load(prm.get("Force"),
-                                                  1,
-                                                  prefix + "Force");
-              definitions.push_back(tool);
-            }
-          prm.leave_subsection();
+          tool.geometry = prm.get("Geometry");
+          tool.file     = Utilities::trim(prm.get("File"));
+          if (tool.geometry == "file")
+          {
+            if (tool.file.empty())
+              throw InputError(prefix
+                               + "File: a tool file is needed when "
+                                 "Geometry = file");
+            if (tool.file[0] != '/')
+              tool.file = prm_directory + "/" + tool.file;
+            if (!std::ifstream(tool.file))
+              throw InputError(prefix
+                               + "File: cannot open the tool "
+                                 "file '"
+                               + tool.file + "'");
+          }
+          tool.sheet_face       = prm.get("Sheet surface") == "top" ? 5 : 4;
+          tool.force_controlled = prm.get("Control") == "force";
+          tool.translation      = parse_function_of_load(prm.get("Translation"),
+                                                    3,
+                                                    prefix + "Translation");
+          tool.axis             = parse_direction(prm.get("Force direction"),
+                                      prefix + "Force direction");
+          tool.force
+            = parse_function_of_load(prm.get("Force"), 1, prefix + "Force");
+          definitions.push_back(tool);
         }
+        prm.leave_subsection();
+      }
       prm.leave_subsection();
       law = std::make_unique<contact::AlartCurnierLaw>(
         parameters.friction_coefficient);
     }
-
 
 
     bool
@@ -217,7 +210,6 @@ namespace deepdraw
     {
       return !definitions.empty();
     }
-
 
 
     void
@@ -228,52 +220,52 @@ namespace deepdraw
       tool_list.clear();
       std::vector<geometry::RigidTool> square_cup_tools;
       for (const ToolDefinition &definition : definitions)
+      {
+        geometry::RigidTool tool;
+        if (definition.geometry == "file")
+          tool = geometry::read_tool_file(definition.file);
+        else
         {
-          geometry::RigidTool tool;
-          if (definition.geometry == "file")
-            tool = geometry::read_tool_file(definition.file);
-          else
-            {
-              if (square_cup_tools.empty())
-                square_cup_tools =
-                  geometry::build_square_cup_tools(square_cup, sheet_thickness);
-              const unsigned int index =
-                definition.geometry == "square cup punch" ?
-                  0 :
-                  (definition.geometry == "square cup die" ? 1 : 2);
-              tool = square_cup_tools[index];
-            }
-          tool.set_rigid_motion(unit_symmetric_tensor<3>(), Tensor<1, 3>());
-          tool_list.push_back(tool);
+          if (square_cup_tools.empty())
+            square_cup_tools
+              = geometry::build_square_cup_tools(square_cup, sheet_thickness);
+          const unsigned int index
+            = definition.geometry == "square cup punch"
+                ? 0
+                : (definition.geometry == "square cup die" ? 1 : 2);
+          tool = square_cup_tools[index];
         }
+        tool.set_rigid_motion(unit_symmetric_tensor<3>(), Tensor<1, 3>());
+        tool_list.push_back(tool);
+      }
     }
-
 
 
     unsigned int
     ContactCoupling::create_pairs(
-      const std::vector<std::vector<unsigned int>>               &face_vertices,
+      const std::vector<std::vector<unsigned int>>              &face_vertices,
       const std::vector<std::array<types::global_dof_index, 3>> &vertex_dofs,
       const types::global_dof_index                              first_index,
       const double                                               youngs_modulus,
       const double                                               element_size)
     {
       pairs.clear();
-      const double r       = parameters.augmentation(youngs_modulus, element_size);
-      force_regularisation = r;
+      const double r = parameters.augmentation(youngs_modulus, element_size);
+      force_regularisation         = r;
       types::global_dof_index next = first_index;
       for (unsigned int k = 0; k < definitions.size(); ++k)
-        for (const unsigned int vertex : face_vertices[definitions[k].sheet_face])
-          {
-            Pair pair;
-            pair.vertex           = vertex;
-            pair.tool             = k;
-            pair.u_dofs           = vertex_dofs[vertex];
-            pair.first_multiplier = next;
-            pair.augmentation     = r;
-            next += 3;
-            pairs.push_back(pair);
-          }
+        for (const unsigned int vertex :
+             face_vertices[definitions[k].sheet_face])
+        {
+          Pair pair;
+          pair.vertex           = vertex;
+          pair.tool             = k;
+          pair.u_dofs           = vertex_dofs[vertex];
+          pair.first_multiplier = next;
+          pair.augmentation     = r;
+          next += 3;
+          pairs.push_back(pair);
+        }
       position_dof.assign(definitions.size(), numbers::invalid_dof_index);
       for (unsigned int k = 0; k < definitions.size(); ++k)
         if (definitions[k].force_controlled)
@@ -285,27 +277,25 @@ namespace deepdraw
     }
 
 
-
     void
     ContactCoupling::add_sparsity(DynamicSparsityPattern &dsp) const
     {
       for (const Pair &pair : pairs)
-        {
-          std::vector<types::global_dof_index> dofs(pair.u_dofs.begin(),
-                                                    pair.u_dofs.end());
-          for (unsigned int c = 0; c < 3; ++c)
-            dofs.push_back(pair.first_multiplier + c);
-          if (position_dof[pair.tool] != numbers::invalid_dof_index)
-            dofs.push_back(position_dof[pair.tool]);
-          for (const auto i : dofs)
-            for (const auto j : dofs)
-              dsp.add(i, j);
-        }
+      {
+        std::vector<types::global_dof_index> dofs(pair.u_dofs.begin(),
+                                                  pair.u_dofs.end());
+        for (unsigned int c = 0; c < 3; ++c)
+          dofs.push_back(pair.first_multiplier + c);
+        if (position_dof[pair.tool] != numbers::invalid_dof_index)
+          dofs.push_back(position_dof[pair.tool]);
+        for (const auto i : dofs)
+          for (const auto j : dofs)
+            dsp.add(i, j);
+      }
       for (const auto dof : position_dof)
         if (dof != numbers::invalid_dof_index)
           dsp.add(dof, dof);
     }
-
 
 
     std::vector<std::pair<types::global_dof_index, types::global_dof_index>>
@@ -320,28 +310,26 @@ namespace deepdraw
     }
 
 
-
     void
     ContactCoupling::start_increment(const double old_load,
                                      const double new_load)
     {
       for (unsigned int k = 0; k < definitions.size(); ++k)
         if (definitions[k].force_controlled)
-          {
-            translation_at_start[k] = position_at_start[k] * definitions[k].axis;
-            translation_at_end[k]   = translation_at_start[k];
-          }
+        {
+          translation_at_start[k] = position_at_start[k] * definitions[k].axis;
+          translation_at_end[k]   = translation_at_start[k];
+        }
         else
-          {
-            translation_at_start[k] =
-              evaluate_translation(*definitions[k].translation, old_load);
-            translation_at_end[k] =
-              evaluate_translation(*definitions[k].translation, new_load);
-            tool_list[k].set_rigid_motion(unit_symmetric_tensor<3>(),
-                                          translation_at_end[k]);
-          }
+        {
+          translation_at_start[k]
+            = evaluate_translation(*definitions[k].translation, old_load);
+          translation_at_end[k]
+            = evaluate_translation(*definitions[k].translation, new_load);
+          tool_list[k].set_rigid_motion(unit_symmetric_tensor<3>(),
+                                        translation_at_end[k]);
+        }
     }
-
 
 
     unsigned int
@@ -356,128 +344,130 @@ namespace deepdraw
       // Force-controlled tools sit at their current unknown position.
       for (unsigned int k = 0; k < definitions.size(); ++k)
         if (definitions[k].force_controlled)
-          {
-            translation_at_end[k] =
-              solution[position_dof[k]] * definitions[k].axis;
-            tool_list[k].set_rigid_motion(unit_symmetric_tensor<3>(),
-                                          translation_at_end[k]);
-          }
+        {
+          translation_at_end[k]
+            = solution[position_dof[k]] * definitions[k].axis;
+          tool_list[k].set_rigid_motion(unit_symmetric_tensor<3>(),
+                                        translation_at_end[k]);
+        }
 
       // Projection and local law of every pair.
       unsigned int changes = 0;
       for (Pair &pair : pairs)
+      {
+        const bool                  was_found      = pair.found;
+        const contact::ContactState previous_state = pair.result.state;
+        Tensor<1, 3>                du, lambda;
+        for (unsigned int c = 0; c < 3; ++c)
         {
-          const bool                  was_found      = pair.found;
-          const contact::ContactState previous_state = pair.result.state;
-          Tensor<1, 3> du, lambda;
-          for (unsigned int c = 0; c < 3; ++c)
-            {
-              du[c]     = solution[pair.u_dofs[c]];
-              lambda[c] = solution[pair.first_multiplier + c];
-            }
-          const Point<3>               x = positions[pair.vertex] + du;
-          const geometry::RigidTool   &tool = tool_list[pair.tool];
-          geometry::ProjectionResult   projection;
-          pair.found = tool.project(x, projection, search_distance)
-                       && !projection.on_free_edge;
-          if (pair.found)
-            {
-              contact::ClosestPointData closest;
-              closest.foot_point = projection.foot;
-              closest.normal     = projection.normal;
-              if (!projection.on_edge)
-                {
-                  // Clamped feet keep the frozen linearisation (no
-                  // tangents given).
-                  closest.tangent_u            = projection.tangent_u;
-                  closest.tangent_v            = projection.tangent_v;
-                  closest.second_derivative_uu = projection.x_uu;
-                  closest.second_derivative_uv = projection.x_uv;
-                  closest.second_derivative_vv = projection.x_vv;
-                }
-              const bool force_controlled = definitions[pair.tool].force_controlled;
-              const contact::ContactPairKinematics kinematics(
-                x,
-                du,
-                closest,
-                translation_at_end[pair.tool] - translation_at_start[pair.tool],
-                force_controlled ? definitions[pair.tool].axis : Tensor<1, 3>(),
-                parameters.linearisation);
-              pair.result = contact::evaluate_contact_pair(*law,
-                                                           kinematics,
-                                                           lambda,
-                                                           pair.augmentation);
-            }
-          else
-            {
-              // Far from the tool: open, F_sup = lambda / r.
-              pair.result                     = contact::ContactPairResult();
-              pair.result.state               = contact::ContactState::open;
-              pair.result.constraint_residual = lambda / pair.augmentation;
-              pair.result.dconstraint_dmultiplier =
-                Tensor<2, 3>(unit_symmetric_tensor<3>()) / pair.augmentation;
-              pair.result.normal_gap = search_distance;
-            }
-          if (was_found != pair.found || previous_state != pair.result.state)
-            ++changes;
+          du[c]     = solution[pair.u_dofs[c]];
+          lambda[c] = solution[pair.first_multiplier + c];
         }
+        const Point<3>             x    = positions[pair.vertex] + du;
+        const geometry::RigidTool &tool = tool_list[pair.tool];
+        geometry::ProjectionResult projection;
+        pair.found = tool.project(x, projection, search_distance)
+                     && !projection.on_free_edge;
+        if (pair.found)
+        {
+          contact::ClosestPointData closest;
+          closest.foot_point = projection.foot;
+          closest.normal     = projection.normal;
+          if (!projection.on_edge)
+          {
+            // Clamped feet keep the frozen linearisation (no
+            // tangents given).
+            closest.tangent_u            = projection.tangent_u;
+            closest.tangent_v            = projection.tangent_v;
+            closest.second_derivative_uu = projection.x_uu;
+            closest.second_derivative_uv = projection.x_uv;
+            closest.second_derivative_vv = projection.x_vv;
+          }
+          const bool force_controlled = definitions[pair.tool].force_controlled;
+          const contact::ContactPairKinematics kinematics(
+            x,
+            du,
+            closest,
+            translation_at_end[pair.tool] - translation_at_start[pair.tool],
+            force_controlled ? definitions[pair.tool].axis : Tensor<1, 3>(),
+            parameters.linearisation);
+          pair.result = contact::evaluate_contact_pair(*law,
+                                                       kinematics,
+                                                       lambda,
+                                                       pair.augmentation);
+        }
+        else
+        {
+          // Far from the tool: open, F_sup = lambda / r.
+          pair.result                     = contact::ContactPairResult();
+          pair.result.state               = contact::ContactState::open;
+          pair.result.constraint_residual = lambda / pair.augmentation;
+          pair.result.dconstraint_dmultiplier
+            = Tensor<2, 3>(unit_symmetric_tensor<3>()) / pair.augmentation;
+          pair.result.normal_gap = search_distance;
+        }
+        if (was_found != pair.found || previous_state != pair.result.state)
+          ++changes;
+      }
       total_search_time += timer.wall_time();
 
       // Local systems [u (3), lambda (3), z (0 or 1)], residual
       // r = [-P, F_sup, a.P]; rhs = -r (DESIGN §1.4, reference Eq. 19).
-      std::vector<unsigned int> active_pairs(definitions.size(), 0);
-      FullMatrix<double>        local_matrix;
-      Vector<double>            local_rhs;
+      std::vector<unsigned int>            active_pairs(definitions.size(), 0);
+      FullMatrix<double>                   local_matrix;
+      Vector<double>                       local_rhs;
       std::vector<types::global_dof_index> dofs;
       for (const Pair &pair : pairs)
-        {
-          const contact::ContactPairResult &result = pair.result;
-          const bool with_z = position_dof[pair.tool] != numbers::invalid_dof_index;
-          const unsigned int n = with_z ? 7 : 6;
-          local_matrix.reinit(n, n);
-          local_rhs.reinit(n);
-          dofs.assign(pair.u_dofs.begin(), pair.u_dofs.end());
-          for (unsigned int c = 0; c < 3; ++c)
-            dofs.push_back(pair.first_multiplier + c);
-          if (with_z)
-            dofs.push_back(position_dof[pair.tool]);
-          if (result.state != contact::ContactState::open)
-            ++active_pairs[pair.tool];
+      {
+        const contact::ContactPairResult &result = pair.result;
+        const bool                        with_z
+          = position_dof[pair.tool] != numbers::invalid_dof_index;
+        const unsigned int n = with_z ? 7 : 6;
+        local_matrix.reinit(n, n);
+        local_rhs.reinit(n);
+        dofs.assign(pair.u_dofs.begin(), pair.u_dofs.end());
+        for (unsigned int c = 0; c < 3; ++c)
+          dofs.push_back(pair.first_multiplier + c);
+        if (with_z)
+          dofs.push_back(position_dof[pair.tool]);
+        if (result.state != contact::ContactState::open)
+          ++active_pairs[pair.tool];
 
-          const Tensor<1, 3> &a = definitions[pair.tool].axis;
-          for (unsigned int i = 0; i < 3; ++i)
-            {
-              local_rhs(i)     = result.force[i];
-              local_rhs(3 + i) = -result.constraint_residual[i];
-              for (unsigned int j = 0; j < 3; ++j)
-                {
-                  local_matrix(i, j)     = -result.dforce_ddisplacement[i][j];
-                  local_matrix(i, 3 + j) = -result.dforce_dmultiplier[i][j];
-                  local_matrix(3 + i, j) = result.dconstraint_ddisplacement[i][j];
-                  local_matrix(3 + i, 3 + j) =
-                    result.dconstraint_dmultiplier[i][j];
-                }
-              if (with_z)
-                {
-                  local_matrix(i, 6)     = -result.dforce_dtool_position[i];
-                  local_matrix(3 + i, 6) = result.dconstraint_dtool_position[i];
-                  for (unsigned int j = 0; j < 3; ++j)
-                    {
-                      local_matrix(6, j) += a[i] * result.dforce_ddisplacement[i][j];
-                      local_matrix(6, 3 + j) +=
-                        a[i] * result.dforce_dmultiplier[i][j];
-                    }
-                  local_matrix(6, 6) += a[i] * result.dforce_dtool_position[i];
-                }
-            }
+        const Tensor<1, 3> &a = definitions[pair.tool].axis;
+        for (unsigned int i = 0; i < 3; ++i)
+        {
+          local_rhs(i)     = result.force[i];
+          local_rhs(3 + i) = -result.constraint_residual[i];
+          for (unsigned int j = 0; j < 3; ++j)
+          {
+            local_matrix(i, j)         = -result.dforce_ddisplacement[i][j];
+            local_matrix(i, 3 + j)     = -result.dforce_dmultiplier[i][j];
+            local_matrix(3 + i, j)     = result.dconstraint_ddisplacement[i][j];
+            local_matrix(3 + i, 3 + j) = result.dconstraint_dmultiplier[i][j];
+          }
           if (with_z)
-            local_rhs(6) = -(a * result.force);
-          if (matrix != nullptr)
-            constraints.distribute_local_to_global(
-              local_matrix, local_rhs, dofs, *matrix, rhs);
-          else
-            constraints.distribute_local_to_global(local_rhs, dofs, rhs);
+          {
+            local_matrix(i, 6)     = -result.dforce_dtool_position[i];
+            local_matrix(3 + i, 6) = result.dconstraint_dtool_position[i];
+            for (unsigned int j = 0; j < 3; ++j)
+            {
+              local_matrix(6, j) += a[i] * result.dforce_ddisplacement[i][j];
+              local_matrix(6, 3 + j) += a[i] * result.dforce_dmultiplier[i][j];
+            }
+            local_matrix(6, 6) += a[i] * result.dforce_dtool_position[i];
+          }
         }
+        if (with_z)
+          local_rhs(6) = -(a * result.force);
+        if (matrix != nullptr)
+          constraints.distribute_local_to_global(local_matrix,
+                                                 local_rhs,
+                                                 dofs,
+                                                 *matrix,
+                                                 rhs);
+        else
+          constraints.distribute_local_to_global(local_rhs, dofs, rhs);
+      }
 
       // Holder equation: sum a.P - F(t) = 0. While no pair of the tool is
       // in contact its row is empty; then the Newton step moves the tool by
@@ -485,14 +475,14 @@ namespace deepdraw
       // change, not the converged solution).
       for (unsigned int k = 0; k < definitions.size(); ++k)
         if (definitions[k].force_controlled)
-          {
-            rhs[position_dof[k]] += evaluate_scalar(*definitions[k].force, new_load);
-            if (active_pairs[k] == 0 && matrix != nullptr)
-              matrix->add(position_dof[k], position_dof[k], force_regularisation);
-          }
+        {
+          rhs[position_dof[k]]
+            += evaluate_scalar(*definitions[k].force, new_load);
+          if (active_pairs[k] == 0 && matrix != nullptr)
+            matrix->add(position_dof[k], position_dof[k], force_regularisation);
+        }
       return changes;
     }
-
 
 
     double
@@ -501,13 +491,13 @@ namespace deepdraw
       double sum = 0.;
       for (const Pair &pair : pairs)
         for (unsigned int c = 0; c < 3; ++c)
-          sum += std::pow(pair.augmentation * rhs[pair.first_multiplier + c], 2);
+          sum
+            += std::pow(pair.augmentation * rhs[pair.first_multiplier + c], 2);
       for (const auto dof : position_dof)
         if (dof != numbers::invalid_dof_index)
           sum += rhs[dof] * rhs[dof];
       return std::sqrt(sum);
     }
-
 
 
     void
@@ -519,30 +509,28 @@ namespace deepdraw
     }
 
 
-
     std::vector<ContactCoupling::NodalContact>
     ContactCoupling::nodal_contact(const unsigned int n_vertices) const
     {
       std::vector<NodalContact> nodal(n_vertices);
       for (const Pair &pair : pairs)
-        {
-          NodalContact &node = nodal[pair.vertex];
-          const unsigned int status =
-            pair.result.state == contact::ContactState::open ?
-              0 :
-              (pair.result.state == contact::ContactState::stick ? 1 : 2);
-          node.status = std::max(node.status, status);
-          node.normal_force += pair.result.normal_force;
-          node.friction_force += pair.result.friction_force;
-          if (pair.found)
-            node.gap = std::min(node.gap, pair.result.normal_gap);
-        }
+      {
+        NodalContact      &node = nodal[pair.vertex];
+        const unsigned int status
+          = pair.result.state == contact::ContactState::open
+              ? 0
+              : (pair.result.state == contact::ContactState::stick ? 1 : 2);
+        node.status = std::max(node.status, status);
+        node.normal_force += pair.result.normal_force;
+        node.friction_force += pair.result.friction_force;
+        if (pair.found)
+          node.gap = std::min(node.gap, pair.result.normal_gap);
+      }
       for (NodalContact &node : nodal)
         if (node.gap == std::numeric_limits<double>::max())
           node.gap = search_distance;
       return nodal;
     }
-
 
 
     std::vector<Tensor<1, 3>>
@@ -555,13 +543,11 @@ namespace deepdraw
     }
 
 
-
     const std::vector<geometry::RigidTool> &
     ContactCoupling::tools() const
     {
       return tool_list;
     }
-
 
 
     const std::vector<ToolDefinition> &
@@ -571,25 +557,28 @@ namespace deepdraw
     }
 
 
-
     unsigned int
     ContactCoupling::n_stick() const
     {
-      return std::count_if(pairs.begin(), pairs.end(), [](const Pair &pair) {
-        return pair.result.state == contact::ContactState::stick;
-      });
+      return std::count_if(pairs.begin(),
+                           pairs.end(),
+                           [](const Pair &pair) {
+                             return pair.result.state
+                                    == contact::ContactState::stick;
+                           });
     }
-
 
 
     unsigned int
     ContactCoupling::n_slip() const
     {
-      return std::count_if(pairs.begin(), pairs.end(), [](const Pair &pair) {
-        return pair.result.state == contact::ContactState::slip;
-      });
+      return std::count_if(pairs.begin(),
+                           pairs.end(),
+                           [](const Pair &pair) {
+                             return pair.result.state
+                                    == contact::ContactState::slip;
+                           });
     }
-
 
 
     unsigned int
@@ -598,17 +587,16 @@ namespace deepdraw
     {
       unsigned int count = 0;
       for (const Pair &pair : pairs)
-        {
-          geometry::ProjectionResult projection;
-          if (tool_list[pair.tool].project(positions[pair.vertex],
-                                           projection,
-                                           search_distance)
-              && !projection.on_free_edge && projection.gap < 0.)
-            ++count;
-        }
+      {
+        geometry::ProjectionResult projection;
+        if (tool_list[pair.tool].project(positions[pair.vertex],
+                                         projection,
+                                         search_distance)
+            && !projection.on_free_edge && projection.gap < 0.)
+          ++count;
+      }
       return count;
     }
-
 
 
     double

@@ -1,20 +1,16 @@
 // Parameters, set-up and the increment loop of FormingProblem; the assembly
 // is in forming_problem_assembly.cc, the output in forming_problem_output.cc.
+#include <cmath>
 #include <deal.II/base/timer.h>
-
 #include <deal.II/dofs/dof_tools.h>
-
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
-
 #include <deepdraw/fe/selective_reduced_quadrature.h>
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/problem/forming_problem.h>
-
-#include <cmath>
-#include <set>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <set>
 #include <sstream>
 
 namespace deepdraw
@@ -48,21 +44,20 @@ namespace deepdraw
     }
 
 
-
     FormingProblem::FormingProblem(ParameterHandler  &prm,
                                    const std::string &input_directory)
-      : fe(FE_Q<3>(1), 3)
-      , dof_handler(triangulation)
-      , fe_scalar(1)
-      , scalar_dof_handler(triangulation)
+        : fe(FE_Q<3>(1), 3)
+        , dof_handler(triangulation)
+        , fe_scalar(1)
+        , scalar_dof_handler(triangulation)
     {
       geometry.parse_parameters(prm);
       prm.enter_subsection("Material");
       material_parameters.parse_parameters(prm);
       prm.leave_subsection();
       prm.enter_subsection("Finite element");
-      selective_reduced_integration =
-        (prm.get("Integration") == "selective reduced");
+      selective_reduced_integration
+        = (prm.get("Integration") == "selective reduced");
       prm.leave_subsection();
       prescribed.parse_parameters(prm,
                                   geometry.symmetry_plane_x,
@@ -74,12 +69,12 @@ namespace deepdraw
       square_cup_tool_parameters.parse_parameters(prm);
       contact.parse_parameters(prm, input_directory);
 
-      material = std::make_unique<material::HillPlasticity>(material_parameters);
-      linear_solver =
-        std::make_unique<solver::LinearSolver>(linear_solver_parameters);
+      material
+        = std::make_unique<material::HillPlasticity>(material_parameters);
+      linear_solver
+        = std::make_unique<solver::LinearSolver>(linear_solver_parameters);
       setup_system();
     }
-
 
 
     void
@@ -91,10 +86,10 @@ namespace deepdraw
       scalar_dof_handler.distribute_dofs(fe_scalar);
 
       for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-        {
-          local_component[i] = fe.system_to_component_index(i).first;
-          local_node[i]      = fe.system_to_component_index(i).second;
-        }
+      {
+        local_component[i] = fe.system_to_component_index(i).first;
+        local_node[i]      = fe.system_to_component_index(i).second;
+      }
 
       vertex_dofs.assign(triangulation.n_vertices(),
                          {{numbers::invalid_dof_index,
@@ -105,12 +100,12 @@ namespace deepdraw
       for (const auto &cell : dof_handler.active_cell_iterators())
         for (const unsigned int v : cell->vertex_indices())
           for (unsigned int c = 0; c < 3; ++c)
-            {
-              const auto dof = cell->vertex_dof_index(v, c);
-              vertex_dofs[cell->vertex_index(v)][c] = dof;
-              dof_initial_position[dof] = cell->vertex(v);
-              dof_component[dof]        = c;
-            }
+          {
+            const auto dof = cell->vertex_dof_index(v, c);
+            vertex_dofs[cell->vertex_index(v)][c] = dof;
+            dof_initial_position[dof]             = cell->vertex(v);
+            dof_component[dof]                    = c;
+          }
 
       for (const auto &cell : dof_handler.active_cell_iterators())
         for (const auto &face : cell->face_iterators())
@@ -120,10 +115,10 @@ namespace deepdraw
                 face_dofs[face->boundary_id()].push_back(
                   face->vertex_dof_index(v, c));
       for (auto &dofs : face_dofs)
-        {
-          std::sort(dofs.begin(), dofs.end());
-          dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
-        }
+      {
+        std::sort(dofs.begin(), dofs.end());
+        dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+      }
 
       // Prescribed dofs; a later entry overrides an earlier one.
       std::map<types::global_dof_index, const PrescribedDisplacement *> owner;
@@ -143,30 +138,30 @@ namespace deepdraw
       // reference Eq. 19).
       types::global_dof_index n_unknowns = dof_handler.n_dofs();
       if (contact.active())
+      {
+        contact.create_tools(square_cup_tool_parameters, geometry.thickness);
+        std::vector<std::vector<unsigned int>> face_vertices(6);
+        for (const auto &cell : triangulation.active_cell_iterators())
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary())
+              for (const unsigned int v : face->vertex_indices())
+                face_vertices[face->boundary_id()].push_back(
+                  face->vertex_index(v));
+        for (auto &vertices : face_vertices)
         {
-          contact.create_tools(square_cup_tool_parameters, geometry.thickness);
-          std::vector<std::vector<unsigned int>> face_vertices(6);
-          for (const auto &cell : triangulation.active_cell_iterators())
-            for (const auto &face : cell->face_iterators())
-              if (face->at_boundary())
-                for (const unsigned int v : face->vertex_indices())
-                  face_vertices[face->boundary_id()].push_back(
-                    face->vertex_index(v));
-          for (auto &vertices : face_vertices)
-            {
-              std::sort(vertices.begin(), vertices.end());
-              vertices.erase(std::unique(vertices.begin(), vertices.end()),
-                             vertices.end());
-            }
-          const double element_size =
-            std::sqrt(geometry.length / geometry.elements_along_x
-                      * geometry.width / geometry.elements_along_y);
-          n_unknowns += contact.create_pairs(face_vertices,
-                                             vertex_dofs,
-                                             dof_handler.n_dofs(),
-                                             material_parameters.youngs_modulus,
-                                             element_size);
+          std::sort(vertices.begin(), vertices.end());
+          vertices.erase(std::unique(vertices.begin(), vertices.end()),
+                         vertices.end());
         }
+        const double element_size
+          = std::sqrt(geometry.length / geometry.elements_along_x
+                      * geometry.width / geometry.elements_along_y);
+        n_unknowns += contact.create_pairs(face_vertices,
+                                           vertex_dofs,
+                                           dof_handler.n_dofs(),
+                                           material_parameters.youngs_modulus,
+                                           element_size);
+      }
 
       constrained_multipliers.clear();
       for (const auto &[u_dof, multiplier] : contact.multiplier_partners())
@@ -219,51 +214,48 @@ namespace deepdraw
     }
 
 
-
     void
     FormingProblem::set_up_prescribed_increment(const double old_load,
                                                 const double new_load)
     {
       predictor_constraints.clear();
       for (const auto &[dof, entry] : prescribed_dofs)
-        {
-          const Point<3> &X = dof_initial_position[dof];
-          predictor_constraints.add_line(dof);
-          predictor_constraints.set_inhomogeneity(
-            dof,
-            prescribed.value(*entry, X, new_load)
-              - prescribed.value(*entry, X, old_load));
-        }
+      {
+        const Point<3> &X = dof_initial_position[dof];
+        predictor_constraints.add_line(dof);
+        predictor_constraints.set_inhomogeneity(
+          dof,
+          prescribed.value(*entry, X, new_load)
+            - prescribed.value(*entry, X, old_load));
+      }
       for (const auto dof : constrained_multipliers)
         predictor_constraints.add_line(dof);
       predictor_constraints.close();
     }
 
 
-
     std::string
     FormingProblem::describe(const IncrementOutcome outcome)
     {
       switch (outcome)
-        {
-          case IncrementOutcome::converged:
-            return "converged";
-          case IncrementOutcome::too_many_iterations:
-            return "too many Newton iterations";
-          case IncrementOutcome::diverged:
-            return "growing residual";
-          case IncrementOutcome::not_a_number:
-            return "residual is not a number";
-          case IncrementOutcome::inverted_element:
-            return "inverted element (det F <= 0)";
-          case IncrementOutcome::return_mapping_failed:
-            return "local return mapping failed";
-          case IncrementOutcome::linear_solver_failed:
-            return "linear solver failed";
-        }
+      {
+        case IncrementOutcome::converged:
+          return "converged";
+        case IncrementOutcome::too_many_iterations:
+          return "too many Newton iterations";
+        case IncrementOutcome::diverged:
+          return "growing residual";
+        case IncrementOutcome::not_a_number:
+          return "residual is not a number";
+        case IncrementOutcome::inverted_element:
+          return "inverted element (det F <= 0)";
+        case IncrementOutcome::return_mapping_failed:
+          return "local return mapping failed";
+        case IncrementOutcome::linear_solver_failed:
+          return "linear solver failed";
+      }
       return "unknown";
     }
-
 
 
     namespace
@@ -280,7 +272,6 @@ namespace deepdraw
     } // namespace
 
 
-
     void
     FormingProblem::prepare_increment(const double old_load,
                                       const double new_load)
@@ -292,13 +283,11 @@ namespace deepdraw
     }
 
 
-
     const Vector<double> &
     FormingProblem::get_newton_unknowns() const
     {
       return converged_solution;
     }
-
 
 
     FormingProblem::IncrementOutcome
@@ -322,10 +311,11 @@ namespace deepdraw
 
       // Merit of the current assembly: the out-of-balance forces of all
       // equations, in N (free displacement rows, r F_sup, tool equations).
-      const auto merit = [&]() {
+      const auto merit = [&]()
+      {
         Vector<double> free_residual = system_rhs;
         homogeneous_constraints.set_zero(free_residual);
-        const double force = block_norm(free_residual, n_u);
+        const double force         = block_norm(free_residual, n_u);
         const double contact_force = contact.residual_norm(system_rhs);
         return std::sqrt(force * force + contact_force * contact_force);
       };
@@ -333,117 +323,114 @@ namespace deepdraw
       unsigned int changes_reported = 0;
 
       for (iterations = 0;; ++iterations)
+      {
+        // Iteration 0 is the tangent predictor (reference Eq. 13): the
+        // prescribed increment enters through inhomogeneous constraints.
+        const AffineConstraints<double> &constraints
+          = iterations == 0 ? predictor_constraints : homogeneous_constraints;
+        if (!assembled)
         {
-          // Iteration 0 is the tangent predictor (reference Eq. 13): the
-          // prescribed increment enters through inhomogeneous constraints.
-          const AffineConstraints<double> &constraints =
-            iterations == 0 ? predictor_constraints : homogeneous_constraints;
-          if (!assembled)
-            {
-              const IncrementOutcome status =
-                assemble(displacement_increment, constraints, true);
-              if (status != IncrementOutcome::converged)
-                return status;
-            }
-          assembled = false;
-
-          if (iterations > 0)
-            {
-              Vector<double> free_residual = system_rhs;
-              homogeneous_constraints.set_zero(free_residual);
-              double reference = block_norm(internal_force, n_u);
-              for (const Tensor<1, 3> &force : contact.tool_forces())
-                reference = std::max(reference, force.norm());
-              if (!(reference > 0.))
-                reference = 1.;
-              const double force_residual =
-                block_norm(free_residual, n_u) / reference;
-              const double contact_residual =
-                contact.residual_norm(system_rhs) / reference;
-              const double increment_norm =
-                block_norm(displacement_increment, n_u);
-              const double relative_correction =
-                increment_norm > 0. ? correction_norm / increment_norm : 0.;
-              residual_history.push_back(force_residual);
-              contact_residual_history.push_back(contact_residual);
-              newton_file.add_row({double(increment_number + 1),
-                                   new_load,
-                                   double(iterations),
-                                   force_residual,
-                                   contact_residual,
-                                   relative_correction,
-                                   double(contact_changes - changes_reported)});
-              changes_reported = contact_changes;
-
-              if (!std::isfinite(force_residual)
-                  || !std::isfinite(contact_residual))
-                return IncrementOutcome::not_a_number;
-              // After the predictor the whole increment is "correction":
-              // there only the residuals decide.
-              if (force_residual <= newton_parameters.force_tolerance
-                  && contact_residual <= newton_parameters.force_tolerance
-                  && (iterations == 1
-                      || relative_correction
-                           <= newton_parameters.correction_tolerance))
-                return IncrementOutcome::converged;
-              const double residual = std::max(force_residual, contact_residual);
-              smallest_residual     = std::min(smallest_residual, residual);
-              if (residual > newton_parameters.divergence_ratio * smallest_residual)
-                return IncrementOutcome::diverged;
-              if (iterations >= newton_parameters.maximum_iterations)
-                return IncrementOutcome::too_many_iterations;
-            }
-
-          Timer timer;
-          try
-            {
-              linear_solver->solve(system_matrix, system_rhs, correction);
-            }
-          catch (const std::exception &error)
-            {
-              std::cerr << "  " << error.what() << std::endl;
-              return IncrementOutcome::linear_solver_failed;
-            }
-          constraints.distribute(correction);
-          solve_time += timer.wall_time();
-          correction_norm = block_norm(correction, n_u);
-          if (!std::isfinite(correction.l2_norm()))
-            return IncrementOutcome::not_a_number;
-          if (iterations == 0 || newton_parameters.line_search_steps == 0)
-            {
-              displacement_increment += correction;
-              continue;
-            }
-
-          // Backtracking line search on the merit: semismooth Newton on
-          // many contact nodes can cycle between states; damping the step
-          // until the out-of-balance force decreases breaks the cycle and
-          // leaves full steps (quadratic convergence) near the solution.
-          const double   merit_now = merit();
-          const Vector<double> start  = displacement_increment;
-          double         step      = 1.;
-          for (unsigned int trial = 0;; ++trial)
-            {
-              displacement_increment = start;
-              displacement_increment.add(step, correction);
-              const IncrementOutcome status =
-                assemble(displacement_increment, homogeneous_constraints, true);
-              const bool acceptable =
-                status == IncrementOutcome::converged
-                && merit() <= (1. - 1e-4 * step) * merit_now;
-              if (acceptable || trial >= newton_parameters.line_search_steps)
-                {
-                  if (status != IncrementOutcome::converged)
-                    return status;
-                  break;
-                }
-              step *= 0.5;
-            }
-          correction_norm *= step;
-          assembled = true;
+          const IncrementOutcome status
+            = assemble(displacement_increment, constraints, true);
+          if (status != IncrementOutcome::converged)
+            return status;
         }
-    }
+        assembled = false;
 
+        if (iterations > 0)
+        {
+          Vector<double> free_residual = system_rhs;
+          homogeneous_constraints.set_zero(free_residual);
+          double reference = block_norm(internal_force, n_u);
+          for (const Tensor<1, 3> &force : contact.tool_forces())
+            reference = std::max(reference, force.norm());
+          if (!(reference > 0.))
+            reference = 1.;
+          const double force_residual
+            = block_norm(free_residual, n_u) / reference;
+          const double contact_residual
+            = contact.residual_norm(system_rhs) / reference;
+          const double increment_norm = block_norm(displacement_increment, n_u);
+          const double relative_correction
+            = increment_norm > 0. ? correction_norm / increment_norm : 0.;
+          residual_history.push_back(force_residual);
+          contact_residual_history.push_back(contact_residual);
+          newton_file.add_row({double(increment_number + 1),
+                               new_load,
+                               double(iterations),
+                               force_residual,
+                               contact_residual,
+                               relative_correction,
+                               double(contact_changes - changes_reported)});
+          changes_reported = contact_changes;
+
+          if (!std::isfinite(force_residual)
+              || !std::isfinite(contact_residual))
+            return IncrementOutcome::not_a_number;
+          // After the predictor the whole increment is "correction":
+          // there only the residuals decide.
+          if (force_residual <= newton_parameters.force_tolerance
+              && contact_residual <= newton_parameters.force_tolerance
+              && (iterations == 1
+                  || relative_correction
+                       <= newton_parameters.correction_tolerance))
+            return IncrementOutcome::converged;
+          const double residual = std::max(force_residual, contact_residual);
+          smallest_residual     = std::min(smallest_residual, residual);
+          if (residual > newton_parameters.divergence_ratio * smallest_residual)
+            return IncrementOutcome::diverged;
+          if (iterations >= newton_parameters.maximum_iterations)
+            return IncrementOutcome::too_many_iterations;
+        }
+
+        Timer timer;
+        try
+        {
+          linear_solver->solve(system_matrix, system_rhs, correction);
+        }
+        catch (const std::exception &error)
+        {
+          std::cerr << "  " << error.what() << std::endl;
+          return IncrementOutcome::linear_solver_failed;
+        }
+        constraints.distribute(correction);
+        solve_time += timer.wall_time();
+        correction_norm = block_norm(correction, n_u);
+        if (!std::isfinite(correction.l2_norm()))
+          return IncrementOutcome::not_a_number;
+        if (iterations == 0 || newton_parameters.line_search_steps == 0)
+        {
+          displacement_increment += correction;
+          continue;
+        }
+
+        // Backtracking line search on the merit: semismooth Newton on
+        // many contact nodes can cycle between states; damping the step
+        // until the out-of-balance force decreases breaks the cycle and
+        // leaves full steps (quadratic convergence) near the solution.
+        const double         merit_now = merit();
+        const Vector<double> start     = displacement_increment;
+        double               step      = 1.;
+        for (unsigned int trial = 0;; ++trial)
+        {
+          displacement_increment = start;
+          displacement_increment.add(step, correction);
+          const IncrementOutcome status
+            = assemble(displacement_increment, homogeneous_constraints, true);
+          const bool acceptable = status == IncrementOutcome::converged
+                                  && merit() <= (1. - 1e-4 * step) * merit_now;
+          if (acceptable || trial >= newton_parameters.line_search_steps)
+          {
+            if (status != IncrementOutcome::converged)
+              return status;
+            break;
+          }
+          step *= 0.5;
+        }
+        correction_norm *= step;
+        assembled = true;
+      }
+    }
 
 
     void
@@ -461,16 +448,16 @@ namespace deepdraw
       for (const auto &cell : triangulation.active_cell_iterators())
         for (const unsigned int v : cell->vertex_indices())
           if (!moved[cell->vertex_index(v)])
-            {
-              moved[cell->vertex_index(v)] = true;
-              for (unsigned int c = 0; c < 3; ++c)
-                cell->vertex(v)[c] +=
-                  displacement_increment[vertex_dofs[cell->vertex_index(v)][c]];
-            }
+          {
+            moved[cell->vertex_index(v)] = true;
+            for (unsigned int c = 0; c < 3; ++c)
+              cell->vertex(v)[c]
+                += displacement_increment[vertex_dofs[cell->vertex_index(v)]
+                                                     [c]];
+          }
       update_cell_geometry();
       compute_thickness();
     }
-
 
 
     namespace
@@ -485,41 +472,39 @@ namespace deepdraw
     } // namespace
 
 
-
     void
     FormingProblem::run()
     {
       try
-        {
-          open_output_files();
-        }
+      {
+        open_output_files();
+      }
       catch (const std::exception &error)
-        {
-          throw InputError("Output/Output directory: cannot write results to '"
-                           + output_parameters.output_directory
-                           + "': " + error.what());
-        }
-      std::cout << "deepdraw: " << triangulation.n_active_cells()
-                << " cells, " << dof_handler.n_dofs()
-                << " displacement unknowns, "
+      {
+        throw InputError("Output/Output directory: cannot write results to '"
+                         + output_parameters.output_directory
+                         + "': " + error.what());
+      }
+      std::cout << "deepdraw: " << triangulation.n_active_cells() << " cells, "
+                << dof_handler.n_dofs() << " displacement unknowns, "
                 << displacement_increment.size() - dof_handler.n_dofs()
                 << " contact unknowns, "
-                << (selective_reduced_integration ? "selective reduced" :
-                                                    "full")
+                << (selective_reduced_integration ? "selective reduced"
+                                                  : "full")
                 << " integration" << std::endl;
       if (contact.active())
-        {
-          contact.start_increment(0., 0.);
-          const unsigned int penetrating =
-            contact.n_initial_penetrations(triangulation.get_vertices());
-          if (penetrating > 0)
-            std::cout << "deepdraw: " << penetrating
-                      << " sheet nodes start inside a tool; the first "
-                         "increment pushes them out"
-                      << std::endl;
-          // Tool placement and contact fields of the initial state.
-          assemble(displacement_increment, homogeneous_constraints, false);
-        }
+      {
+        contact.start_increment(0., 0.);
+        const unsigned int penetrating
+          = contact.n_initial_penetrations(triangulation.get_vertices());
+        if (penetrating > 0)
+          std::cout << "deepdraw: " << penetrating
+                    << " sheet nodes start inside a tool; the first "
+                       "increment pushes them out"
+                    << std::endl;
+        // Tool placement and contact fields of the initial state.
+        assemble(displacement_increment, homogeneous_constraints, false);
+      }
       write_vtu(0.);
 
       std::vector<double> landing_loads;
@@ -532,52 +517,50 @@ namespace deepdraw
 
       Timer run_timer;
       while (!control.finished())
+      {
+        const double old_load = control.current_load();
+        const double new_load = old_load + control.next_increment();
+        assembly_time         = 0.;
+        solve_time            = 0.;
+        const double           search_time_before = contact.search_time();
+        Timer                  increment_timer;
+        unsigned int           iterations = 0;
+        const IncrementOutcome outcome
+          = solve_increment(old_load, new_load, iterations);
+
+        if (outcome != IncrementOutcome::converged)
         {
-          const double old_load = control.current_load();
-          const double new_load = old_load + control.next_increment();
-          assembly_time         = 0.;
-          solve_time            = 0.;
-          const double search_time_before = contact.search_time();
-          Timer        increment_timer;
-          unsigned int iterations = 0;
-          const IncrementOutcome outcome =
-            solve_increment(old_load, new_load, iterations);
+          std::cout << "  load " << format_load(new_load) << ": "
+                    << describe(outcome) << ", cutting the increment back"
+                    << std::endl;
+          trial_history = history;
+          if (!control.cut_back())
+          {
+            const bool too_small = control.next_increment()
+                                   < increment_parameters.minimum_increment;
+            throw RunFailure(
+              "the increment from load " + format_load(old_load) + " to "
+              + format_load(new_load) + " failed (" + describe(outcome)
+              + ") after "
+              + std::to_string(control.cut_backs_of_current_increment())
+              + " attempt(s), and "
+              + (too_small ? "a further cut-back would go below Load "
+                             "stepping/Minimum increment"
+                           : "Load stepping/Maximum cut-backs is reached")
+              + "; the results up to load " + format_load(old_load) + " are in "
+              + output_parameters.output_directory);
+          }
+          continue;
+        }
 
-          if (outcome != IncrementOutcome::converged)
-            {
-              std::cout << "  load " << format_load(new_load) << ": "
-                        << describe(outcome) << ", cutting the increment back"
-                        << std::endl;
-              trial_history = history;
-              if (!control.cut_back())
-                {
-                  const bool too_small = control.next_increment()
-                                         < increment_parameters.minimum_increment;
-                  throw RunFailure(
-                    "the increment from load " + format_load(old_load) + " to "
-                    + format_load(new_load) + " failed (" + describe(outcome)
-                    + ") after "
-                    + std::to_string(control.cut_backs_of_current_increment())
-                    + " attempt(s), and "
-                    + (too_small ?
-                         "a further cut-back would go below Load "
-                         "stepping/Minimum increment" :
-                         "Load stepping/Maximum cut-backs is reached")
-                    + "; the results up to load " + format_load(old_load)
-                    + " are in " + output_parameters.output_directory);
-                }
-              continue;
-            }
+        const unsigned int cut_backs = control.cut_backs_of_current_increment();
+        control.accept(iterations);
+        commit_increment();
+        ++increment_number;
 
-          const unsigned int cut_backs = control.cut_backs_of_current_increment();
-          control.accept(iterations);
-          commit_increment();
-          ++increment_number;
-
-          Timer output_timer;
-          const bool at_output =
-            output_parameters.output_interval <= 0.
-            || control.finished()
+        Timer      output_timer;
+        const bool at_output
+          = output_parameters.output_interval <= 0. || control.finished()
             || std::find_if(landing_loads.begin(),
                             landing_loads.end(),
                             [&](const double l) {
@@ -585,55 +568,54 @@ namespace deepdraw
                                      < 1e-9 * std::max(1., std::abs(l));
                             })
                  != landing_loads.end();
-          if (at_output)
-            write_vtu(new_load);
-          write_increment_tables(new_load);
-          const double output_time = output_timer.wall_time();
-          const double search_time = contact.search_time() - search_time_before;
-          const double force_residual =
-            residual_history.empty() ? 0. : residual_history.back();
-          const double contact_residual =
-            contact_residual_history.empty() ? 0. :
-                                               contact_residual_history.back();
+        if (at_output)
+          write_vtu(new_load);
+        write_increment_tables(new_load);
+        const double output_time = output_timer.wall_time();
+        const double search_time = contact.search_time() - search_time_before;
+        const double force_residual
+          = residual_history.empty() ? 0. : residual_history.back();
+        const double contact_residual = contact_residual_history.empty()
+                                          ? 0.
+                                          : contact_residual_history.back();
 
-          statistics_file.add_row({double(increment_number),
-                                   new_load,
-                                   new_load - old_load,
-                                   double(iterations),
-                                   double(cut_backs),
-                                   force_residual,
-                                   contact_residual,
-                                   double(n_plastic_points),
-                                   double(contact_changes),
-                                   double(contact.n_stick()),
-                                   double(contact.n_slip()),
-                                   assembly_time,
-                                   search_time,
-                                   solve_time,
-                                   output_time,
-                                   increment_timer.wall_time()});
+        statistics_file.add_row({double(increment_number),
+                                 new_load,
+                                 new_load - old_load,
+                                 double(iterations),
+                                 double(cut_backs),
+                                 force_residual,
+                                 contact_residual,
+                                 double(n_plastic_points),
+                                 double(contact_changes),
+                                 double(contact.n_stick()),
+                                 double(contact.n_slip()),
+                                 assembly_time,
+                                 search_time,
+                                 solve_time,
+                                 output_time,
+                                 increment_timer.wall_time()});
 
-          std::ostringstream line;
-          line << "increment " << std::setw(4) << increment_number << "  load "
-               << std::setw(9) << format_load(new_load) << "  iterations "
-               << std::setw(2) << iterations << "  cut-backs " << cut_backs
-               << std::scientific << std::setprecision(2) << "  residuals "
-               << force_residual << " " << contact_residual
-               << std::defaultfloat << "  plastic points " << n_plastic_points;
-          if (contact.active())
-            line << "  stick/slip " << contact.n_stick() << "/"
-                 << contact.n_slip();
-          line << std::fixed << std::setprecision(3) << "  time "
-               << increment_timer.wall_time() << " s";
-          std::cout << line.str() << std::endl;
-        }
+        std::ostringstream line;
+        line << "increment " << std::setw(4) << increment_number << "  load "
+             << std::setw(9) << format_load(new_load) << "  iterations "
+             << std::setw(2) << iterations << "  cut-backs " << cut_backs
+             << std::scientific << std::setprecision(2) << "  residuals "
+             << force_residual << " " << contact_residual << std::defaultfloat
+             << "  plastic points " << n_plastic_points;
+        if (contact.active())
+          line << "  stick/slip " << contact.n_stick() << "/"
+               << contact.n_slip();
+        line << std::fixed << std::setprecision(3) << "  time "
+             << increment_timer.wall_time() << " s";
+        std::cout << line.str() << std::endl;
+      }
       std::cout << "deepdraw: finished at load "
                 << format_load(control.current_load()) << " after "
                 << increment_number << " increments in "
                 << run_timer.wall_time() << " s; results in "
                 << output_parameters.output_directory << std::endl;
     }
-
 
 
     const DoFHandler<3> &
@@ -643,13 +625,11 @@ namespace deepdraw
     }
 
 
-
     const Vector<double> &
     FormingProblem::get_total_displacement() const
     {
       return total_displacement;
     }
-
 
 
     const std::vector<Point<3>> &
@@ -659,13 +639,11 @@ namespace deepdraw
     }
 
 
-
     const std::vector<QuadraturePointHistory> &
     FormingProblem::get_history() const
     {
       return history;
     }
-
 
 
     const std::vector<double> &
@@ -675,13 +653,11 @@ namespace deepdraw
     }
 
 
-
     const std::vector<unsigned int> &
     FormingProblem::get_vertex_column() const
     {
       return vertex_column;
     }
-
 
 
     const std::vector<double> &
@@ -691,13 +667,11 @@ namespace deepdraw
     }
 
 
-
     const ContactCoupling &
     FormingProblem::get_contact() const
     {
       return contact;
     }
-
 
 
     types::global_dof_index
@@ -707,7 +681,6 @@ namespace deepdraw
     }
 
 
-
     const Vector<double> &
     FormingProblem::get_internal_force() const
     {
@@ -715,13 +688,11 @@ namespace deepdraw
     }
 
 
-
     unsigned int
     FormingProblem::last_plastic_points() const
     {
       return n_plastic_points;
     }
-
 
 
     Tensor<1, 3>

@@ -1,12 +1,10 @@
 // Results of FormingProblem: geometric thickness, VTU/PVD, CSV tables.
+#include <algorithm>
+#include <cmath>
 #include <deal.II/numerics/data_out.h>
-
 #include <deepdraw/fe/selective_reduced_quadrature.h>
 #include <deepdraw/geometry/tool_vtu.h>
 #include <deepdraw/problem/forming_problem.h>
-
-#include <algorithm>
-#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -23,38 +21,38 @@ namespace deepdraw
       // through-thickness column, (x_top - x_bottom) . n with n the sheet
       // normal, the average of the outward normals of the top faces minus
       // those of the bottom faces around the column.
-      const unsigned int n_columns =
-        (geometry.elements_along_x + 1) * (geometry.elements_along_y + 1);
+      const unsigned int n_columns
+        = (geometry.elements_along_x + 1) * (geometry.elements_along_y + 1);
       std::vector<Tensor<1, 3>> normal(n_columns);
       std::vector<Point<3>>     top(n_columns), bottom(n_columns);
       const auto               &vertices = triangulation.get_vertices();
       for (unsigned int v = 0; v < vertices.size(); ++v)
-        {
-          if (vertex_layer[v] == 0)
-            bottom[vertex_column[v]] = vertices[v];
-          if (vertex_layer[v] == geometry.layers_through_thickness)
-            top[vertex_column[v]] = vertices[v];
-        }
+      {
+        if (vertex_layer[v] == 0)
+          bottom[vertex_column[v]] = vertices[v];
+        if (vertex_layer[v] == geometry.layers_through_thickness)
+          top[vertex_column[v]] = vertices[v];
+      }
       for (const auto &cell : triangulation.active_cell_iterators())
         for (const auto &face : cell->face_iterators())
           if (face->at_boundary()
               && (face->boundary_id() == 4 || face->boundary_id() == 5))
-            {
-              Tensor<1, 3> n = cross_product_3d(face->vertex(3) - face->vertex(0),
-                                                face->vertex(2) - face->vertex(1));
-              if (n * (face->center() - cell->center()) < 0.)
-                n = -n;
-              n /= n.norm();
-              const double sign = face->boundary_id() == 5 ? 1. : -1.;
-              for (const unsigned int v : face->vertex_indices())
-                normal[vertex_column[face->vertex_index(v)]] += sign * n;
-            }
+          {
+            Tensor<1, 3> n
+              = cross_product_3d(face->vertex(3) - face->vertex(0),
+                                 face->vertex(2) - face->vertex(1));
+            if (n * (face->center() - cell->center()) < 0.)
+              n = -n;
+            n /= n.norm();
+            const double sign = face->boundary_id() == 5 ? 1. : -1.;
+            for (const unsigned int v : face->vertex_indices())
+              normal[vertex_column[face->vertex_index(v)]] += sign * n;
+          }
       column_thickness.resize(n_columns);
       for (unsigned int c = 0; c < n_columns; ++c)
-        column_thickness[c] =
-          std::abs((top[c] - bottom[c]) * normal[c]) / normal[c].norm();
+        column_thickness[c]
+          = std::abs((top[c] - bottom[c]) * normal[c]) / normal[c].norm();
     }
-
 
 
     std::vector<Tensor<2, 3>>
@@ -63,12 +61,11 @@ namespace deepdraw
       std::vector<Tensor<2, 3>> stress(triangulation.n_active_cells());
       for (unsigned int cell = 0; cell < stress.size(); ++cell)
         for (unsigned int q = 0; q < fe::n_weighted_points; ++q)
-          stress[cell] +=
-            cauchy_stress(history[cell * fe::n_weighted_points + q])
-            / double(fe::n_weighted_points);
+          stress[cell]
+            += cauchy_stress(history[cell * fe::n_weighted_points + q])
+               / double(fe::n_weighted_points);
       return stress;
     }
-
 
 
     void
@@ -108,18 +105,16 @@ namespace deepdraw
           columns.push_back(face_names[face] + component);
       reactions_file.open(directory + "/reactions.csv", columns);
       if (contact.active())
-        {
-          // Force of each tool on the sheet (N) and its translation (mm).
-          std::vector<std::string> tool_columns = {"load"};
-          for (const ToolDefinition &tool : contact.tool_definitions())
-            for (const char *suffix :
-                 {"_Fx", "_Fy", "_Fz", "_ux", "_uy", "_uz"})
-              tool_columns.push_back(tool.name + suffix);
-          tools_file.open(directory + "/tools.csv", tool_columns);
-        }
+      {
+        // Force of each tool on the sheet (N) and its translation (mm).
+        std::vector<std::string> tool_columns = {"load"};
+        for (const ToolDefinition &tool : contact.tool_definitions())
+          for (const char *suffix : {"_Fx", "_Fy", "_Fz", "_ux", "_uy", "_uz"})
+            tool_columns.push_back(tool.name + suffix);
+        tools_file.open(directory + "/tools.csv", tool_columns);
+      }
       write_increment_tables(0.);
     }
-
 
 
     void
@@ -127,28 +122,27 @@ namespace deepdraw
     {
       std::vector<double> row = {load};
       for (const unsigned int face : reaction_faces)
-        {
-          const Tensor<1, 3> reaction = face_reaction(face);
-          for (unsigned int c = 0; c < 3; ++c)
-            row.push_back(reaction[c]);
-        }
+      {
+        const Tensor<1, 3> reaction = face_reaction(face);
+        for (unsigned int c = 0; c < 3; ++c)
+          row.push_back(reaction[c]);
+      }
       reactions_file.add_row(row);
 
       if (contact.active())
+      {
+        std::vector<double>             tool_row = {load};
+        const std::vector<Tensor<1, 3>> forces   = contact.tool_forces();
+        for (unsigned int k = 0; k < forces.size(); ++k)
         {
-          std::vector<double>             tool_row = {load};
-          const std::vector<Tensor<1, 3>> forces   = contact.tool_forces();
-          for (unsigned int k = 0; k < forces.size(); ++k)
-            {
-              for (unsigned int c = 0; c < 3; ++c)
-                tool_row.push_back(forces[k][c]);
-              for (unsigned int c = 0; c < 3; ++c)
-                tool_row.push_back(contact.tools()[k].translation()[c]);
-            }
-          tools_file.add_row(tool_row);
+          for (unsigned int c = 0; c < 3; ++c)
+            tool_row.push_back(forces[k][c]);
+          for (unsigned int c = 0; c < 3; ++c)
+            tool_row.push_back(contact.tools()[k].translation()[c]);
         }
+        tools_file.add_row(tool_row);
+      }
     }
-
 
 
     void
@@ -165,45 +159,46 @@ namespace deepdraw
       std::vector<Vector<double>> stress(6, Vector<double>(n_cells));
       std::vector<Vector<double>> back_stress(6, Vector<double>(n_cells));
       std::vector<Vector<double>> rolling_direction(3, Vector<double>(n_cells));
-      Vector<double> equivalent_stress(n_cells), plastic_strain(n_cells);
-      const unsigned int pairs[6][2] = {
-        {0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {0, 2}};
+      Vector<double>     equivalent_stress(n_cells), plastic_strain(n_cells);
+      const unsigned int pairs[6][2]
+        = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {0, 2}};
       for (unsigned int cell = 0; cell < n_cells; ++cell)
         for (unsigned int q = 0; q < n_q; ++q)
+        {
+          const QuadraturePointHistory &point = history[cell * n_q + q];
+          const Tensor<2, 3>            sigma = cauchy_stress(point);
+          const Tensor<2, 3>           &R     = point.material_axes;
+          const Tensor<2, 3>            X
+            = R * Tensor<2, 3>(point.state.back_stress) * transpose(R);
+          for (unsigned int p = 0; p < 6; ++p)
           {
-            const QuadraturePointHistory &point = history[cell * n_q + q];
-            const Tensor<2, 3> sigma = cauchy_stress(point);
-            const Tensor<2, 3> &R    = point.material_axes;
-            const Tensor<2, 3>  X =
-              R * Tensor<2, 3>(point.state.back_stress) * transpose(R);
-            for (unsigned int p = 0; p < 6; ++p)
-              {
-                stress[p][cell] += sigma[pairs[p][0]][pairs[p][1]] / n_q;
-                back_stress[p][cell] += X[pairs[p][0]][pairs[p][1]] / n_q;
-              }
-            for (unsigned int d = 0; d < 3; ++d)
-              rolling_direction[d][cell] += R[d][0] / n_q;
-            equivalent_stress[cell] +=
-              material->equivalent_stress(point.state.stress
-                                          - point.state.back_stress)
-              / n_q;
-            plastic_strain[cell] += point.state.equivalent_plastic_strain / n_q;
+            stress[p][cell] += sigma[pairs[p][0]][pairs[p][1]] / n_q;
+            back_stress[p][cell] += X[pairs[p][0]][pairs[p][1]] / n_q;
           }
+          for (unsigned int d = 0; d < 3; ++d)
+            rolling_direction[d][cell] += R[d][0] / n_q;
+          equivalent_stress[cell]
+            += material->equivalent_stress(point.state.stress
+                                           - point.state.back_stress)
+               / n_q;
+          plastic_strain[cell] += point.state.equivalent_plastic_strain / n_q;
+        }
 
       // Thickness strain ln(t/t0) at every vertex of a column.
       Vector<double> thickness_strain(scalar_dof_handler.n_dofs());
       for (const auto &cell : scalar_dof_handler.active_cell_iterators())
         for (const unsigned int v : cell->vertex_indices())
-          thickness_strain[cell->vertex_dof_index(v, 0)] = std::log(
-            column_thickness[vertex_column[cell->vertex_index(v)]]
-            / geometry.thickness);
+          thickness_strain[cell->vertex_dof_index(v, 0)]
+            = std::log(column_thickness[vertex_column[cell->vertex_index(v)]]
+                       / geometry.thickness);
 
       DataOut<3> data_out;
       data_out.attach_triangulation(triangulation);
       std::vector<std::string> names(3, "displacement");
       std::vector<DataComponentInterpretation::DataComponentInterpretation>
-        interpretation(3,
-                       DataComponentInterpretation::component_is_part_of_vector);
+        interpretation(
+          3,
+          DataComponentInterpretation::component_is_part_of_vector);
       data_out.add_data_vector(dof_handler,
                                total_displacement,
                                names,
@@ -219,57 +214,59 @@ namespace deepdraw
         contact_gap(scalar_dof_handler.n_dofs()),
         contact_pressure(scalar_dof_handler.n_dofs());
       std::vector<Vector<double>> friction_stress(
-        3, Vector<double>(scalar_dof_handler.n_dofs()));
+        3,
+        Vector<double>(scalar_dof_handler.n_dofs()));
       if (contact.active())
-        {
-          const std::vector<ContactCoupling::NodalContact> nodal =
-            contact.nodal_contact(triangulation.n_vertices());
-          std::vector<double> area(triangulation.n_vertices(), 0.);
-          for (const auto &cell : triangulation.active_cell_iterators())
-            for (const auto &face : cell->face_iterators())
-              if (face->at_boundary()
-                  && (face->boundary_id() == 4 || face->boundary_id() == 5))
-                for (const unsigned int v : face->vertex_indices())
-                  area[face->vertex_index(v)] += face->measure() / 4.;
-          for (const auto &cell : scalar_dof_handler.active_cell_iterators())
-            for (const unsigned int v : cell->vertex_indices())
-              {
-                const unsigned int vertex = cell->vertex_index(v);
-                const auto         dof    = cell->vertex_dof_index(v, 0);
-                contact_status[dof]       = nodal[vertex].status;
-                contact_gap[dof]          = nodal[vertex].gap;
-                if (area[vertex] > 0.)
-                  {
-                    contact_pressure[dof] =
-                      nodal[vertex].normal_force / area[vertex];
-                    for (unsigned int d = 0; d < 3; ++d)
-                      friction_stress[d][dof] =
-                        nodal[vertex].friction_force[d] / area[vertex];
-                  }
-              }
+      {
+        const std::vector<ContactCoupling::NodalContact> nodal
+          = contact.nodal_contact(triangulation.n_vertices());
+        std::vector<double> area(triangulation.n_vertices(), 0.);
+        for (const auto &cell : triangulation.active_cell_iterators())
+          for (const auto &face : cell->face_iterators())
+            if (face->at_boundary()
+                && (face->boundary_id() == 4 || face->boundary_id() == 5))
+              for (const unsigned int v : face->vertex_indices())
+                area[face->vertex_index(v)] += face->measure() / 4.;
+        for (const auto &cell : scalar_dof_handler.active_cell_iterators())
+          for (const unsigned int v : cell->vertex_indices())
+          {
+            const unsigned int vertex = cell->vertex_index(v);
+            const auto         dof    = cell->vertex_dof_index(v, 0);
+            contact_status[dof]       = nodal[vertex].status;
+            contact_gap[dof]          = nodal[vertex].gap;
+            if (area[vertex] > 0.)
+            {
+              contact_pressure[dof] = nodal[vertex].normal_force / area[vertex];
+              for (unsigned int d = 0; d < 3; ++d)
+                friction_stress[d][dof]
+                  = nodal[vertex].friction_force[d] / area[vertex];
+            }
+          }
+        data_out.add_data_vector(scalar_dof_handler,
+                                 contact_status,
+                                 "contact_status");
+        data_out.add_data_vector(scalar_dof_handler,
+                                 contact_gap,
+                                 "contact_gap");
+        data_out.add_data_vector(scalar_dof_handler,
+                                 contact_pressure,
+                                 "contact_pressure");
+        for (unsigned int d = 0; d < 3; ++d)
           data_out.add_data_vector(scalar_dof_handler,
-                                   contact_status,
-                                   "contact_status");
-          data_out.add_data_vector(scalar_dof_handler, contact_gap, "contact_gap");
-          data_out.add_data_vector(scalar_dof_handler,
-                                   contact_pressure,
-                                   "contact_pressure");
-          for (unsigned int d = 0; d < 3; ++d)
-            data_out.add_data_vector(scalar_dof_handler,
-                                     friction_stress[d],
-                                     std::string("friction_stress_") + axes[d]);
-        }
+                                   friction_stress[d],
+                                   std::string("friction_stress_") + axes[d]);
+      }
       for (unsigned int p = 0; p < 6; ++p)
-        {
-          const std::string suffix =
-            std::string(axes[pairs[p][0]]) + axes[pairs[p][1]];
-          data_out.add_data_vector(stress[p],
-                                   "stress_" + suffix,
-                                   DataOut<3>::type_cell_data);
-          data_out.add_data_vector(back_stress[p],
-                                   "back_stress_" + suffix,
-                                   DataOut<3>::type_cell_data);
-        }
+      {
+        const std::string suffix
+          = std::string(axes[pairs[p][0]]) + axes[pairs[p][1]];
+        data_out.add_data_vector(stress[p],
+                                 "stress_" + suffix,
+                                 DataOut<3>::type_cell_data);
+        data_out.add_data_vector(back_stress[p],
+                                 "back_stress_" + suffix,
+                                 DataOut<3>::type_cell_data);
+      }
       for (unsigned int d = 0; d < 3; ++d)
         data_out.add_data_vector(rolling_direction[d],
                                  std::string("rolling_direction_") + axes[d],
@@ -285,8 +282,8 @@ namespace deepdraw
       std::ostringstream name;
       name << "solution-" << std::setw(5) << std::setfill('0') << output_step
            << ".vtu";
-      const std::string path =
-        output_parameters.output_directory + "/" + name.str();
+      const std::string path
+        = output_parameters.output_directory + "/" + name.str();
       {
         std::ofstream out(path + ".tmp");
         data_out.write_vtu(out);
@@ -294,18 +291,18 @@ namespace deepdraw
       std::filesystem::rename(path + ".tmp", path);
       std::vector<std::string> parts = {name.str()};
       for (const geometry::RigidTool &tool : contact.tools())
-        {
-          std::string tool_name = tool.name();
-          std::replace(tool_name.begin(), tool_name.end(), ' ', '_');
-          std::ostringstream tool_file;
-          tool_file << "tool_" << tool_name << "-" << std::setw(5)
-                    << std::setfill('0') << output_step << ".vtu";
-          const std::string tool_path =
-            output_parameters.output_directory + "/" + tool_file.str();
-          geometry::write_vtu(tool, tool_path + ".tmp", 8);
-          std::filesystem::rename(tool_path + ".tmp", tool_path);
-          parts.push_back(tool_file.str());
-        }
+      {
+        std::string tool_name = tool.name();
+        std::replace(tool_name.begin(), tool_name.end(), ' ', '_');
+        std::ostringstream tool_file;
+        tool_file << "tool_" << tool_name << "-" << std::setw(5)
+                  << std::setfill('0') << output_step << ".vtu";
+        const std::string tool_path
+          = output_parameters.output_directory + "/" + tool_file.str();
+        geometry::write_vtu(tool, tool_path + ".tmp", 8);
+        std::filesystem::rename(tool_path + ".tmp", tool_path);
+        parts.push_back(tool_file.str());
+      }
       pvd->add_step(load, parts);
       ++output_step;
     }

@@ -1,8 +1,7 @@
-#include <deepdraw/io/input_error.h>
-#include <deepdraw/solver/increment_control.h>
-
 #include <algorithm>
 #include <cmath>
+#include <deepdraw/io/input_error.h>
+#include <deepdraw/solver/increment_control.h>
 
 namespace deepdraw
 {
@@ -54,7 +53,6 @@ namespace deepdraw
     }
 
 
-
     void
     IncrementControlParameters::parse_parameters(ParameterHandler &prm)
     {
@@ -79,20 +77,18 @@ namespace deepdraw
     }
 
 
-
     IncrementControl::IncrementControl(
       const IncrementControlParameters &parameters,
       const std::vector<double>        &landing)
-      : parameters(parameters)
-      , landing_loads(landing)
-      , load(0.)
-      , increment(std::min(parameters.initial_increment,
-                           parameters.maximum_increment))
+        : parameters(parameters)
+        , landing_loads(landing)
+        , load(0.)
+        , increment(std::min(parameters.initial_increment,
+                             parameters.maximum_increment))
     {
       landing_loads.push_back(parameters.final_load);
       std::sort(landing_loads.begin(), landing_loads.end());
     }
-
 
 
     bool
@@ -102,13 +98,11 @@ namespace deepdraw
     }
 
 
-
     double
     IncrementControl::current_load() const
     {
       return load;
     }
-
 
 
     double
@@ -118,14 +112,13 @@ namespace deepdraw
       // before it by stretching up to 1 % .
       for (const double target : landing_loads)
         if (target > load * (1. + 1e-12) + 1e-14)
-          {
-            if (load + increment * 1.01 >= target)
-              return target - load;
-            break;
-          }
+        {
+          if (load + increment * 1.01 >= target)
+            return target - load;
+          break;
+        }
       return increment;
     }
-
 
 
     void
@@ -143,7 +136,6 @@ namespace deepdraw
     }
 
 
-
     bool
     IncrementControl::cut_back()
     {
@@ -152,7 +144,6 @@ namespace deepdraw
       return increment >= parameters.minimum_increment
              && cut_backs <= parameters.maximum_cut_backs;
     }
-
 
 
     unsigned int

@@ -2,9 +2,7 @@
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
-
 #include <deepdraw/solver/linear_solver.h>
-
 #include <stdexcept>
 
 namespace deepdraw
@@ -25,7 +23,6 @@ namespace deepdraw
     }
 
 
-
     void
     LinearSolverParameters::parse_parameters(ParameterHandler &prm)
     {
@@ -35,24 +32,21 @@ namespace deepdraw
     }
 
 
-
     struct LinearSolver::Implementation
     {
-      SparseDirectUMFPACK           umfpack;
+      SparseDirectUMFPACK            umfpack;
       TrilinosWrappers::SparseMatrix trilinos_matrix;
     };
 
 
-
     LinearSolver::LinearSolver(const LinearSolverParameters &parameters)
-      : parameters(parameters)
-      , implementation(std::make_unique<Implementation>())
-    {}
-
+        : parameters(parameters)
+        , implementation(std::make_unique<Implementation>())
+    {
+    }
 
 
     LinearSolver::~LinearSolver() = default;
-
 
 
     void
@@ -61,41 +55,41 @@ namespace deepdraw
                         Vector<double>             &solution)
     {
       try
+      {
+        if (parameters.type == "UMFPACK")
         {
-          if (parameters.type == "UMFPACK")
-            {
-              implementation->umfpack.initialize(matrix);
-              implementation->umfpack.vmult(solution, rhs);
-              return;
-            }
-
-          implementation->trilinos_matrix.reinit(matrix);
-          const IndexSet all = complete_index_set(matrix.m());
-          TrilinosWrappers::MPI::Vector trilinos_rhs(all, MPI_COMM_SELF);
-          TrilinosWrappers::MPI::Vector trilinos_solution(all, MPI_COMM_SELF);
-          for (unsigned int i = 0; i < rhs.size(); ++i)
-            trilinos_rhs[i] = rhs[i];
-          trilinos_rhs.compress(VectorOperation::insert);
-
-          SolverControl control(1, 0);
-          TrilinosWrappers::SolverDirect::AdditionalData data(
-            false,
-            parameters.type == "MUMPS" ? "Amesos_Mumps" : "Amesos_Klu");
-          TrilinosWrappers::SolverDirect direct(control, data);
-          direct.solve(implementation->trilinos_matrix,
-                       trilinos_solution,
-                       trilinos_rhs);
-          for (unsigned int i = 0; i < solution.size(); ++i)
-            solution[i] = trilinos_solution[i];
+          implementation->umfpack.initialize(matrix);
+          implementation->umfpack.vmult(solution, rhs);
+          return;
         }
+
+        implementation->trilinos_matrix.reinit(matrix);
+        const IndexSet                all = complete_index_set(matrix.m());
+        TrilinosWrappers::MPI::Vector trilinos_rhs(all, MPI_COMM_SELF);
+        TrilinosWrappers::MPI::Vector trilinos_solution(all, MPI_COMM_SELF);
+        for (unsigned int i = 0; i < rhs.size(); ++i)
+          trilinos_rhs[i] = rhs[i];
+        trilinos_rhs.compress(VectorOperation::insert);
+
+        SolverControl                                  control(1, 0);
+        TrilinosWrappers::SolverDirect::AdditionalData data(
+          false,
+          parameters.type == "MUMPS" ? "Amesos_Mumps" : "Amesos_Klu");
+        TrilinosWrappers::SolverDirect direct(control, data);
+        direct.solve(implementation->trilinos_matrix,
+                     trilinos_solution,
+                     trilinos_rhs);
+        for (unsigned int i = 0; i < solution.size(); ++i)
+          solution[i] = trilinos_solution[i];
+      }
       catch (const std::exception &error)
-        {
-          throw std::runtime_error(
-            "the linear solver (" + parameters.type
-            + ") failed; the stiffness matrix is probably singular (are "
-              "rigid-body motions prevented by the boundary conditions?): "
-            + error.what());
-        }
+      {
+        throw std::runtime_error(
+          "the linear solver (" + parameters.type
+          + ") failed; the stiffness matrix is probably singular (are "
+            "rigid-body motions prevented by the boundary conditions?): "
+          + error.what());
+      }
     }
   } // namespace solver
 } // namespace deepdraw

@@ -45,7 +45,6 @@ namespace deepdraw
     }
 
 
-
     void
     NewtonParameters::parse_parameters(ParameterHandler &prm)
     {

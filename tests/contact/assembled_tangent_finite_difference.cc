@@ -4,13 +4,11 @@
 // every column, on a coarse square cup with mixed open/stick/slip pairs.
 // Columns whose difference crosses a kink of the contact law (a pair
 // changing state between x - h and x + h) are skipped and counted.
-#include <deal.II/base/mpi.h>
-
-#include <deepdraw/problem/forming_problem.h>
-
-#include <random>
-
 #include "test_utilities.h"
+
+#include <deal.II/base/mpi.h>
+#include <deepdraw/problem/forming_problem.h>
+#include <random>
 
 using namespace dealii;
 using namespace deepdraw;
@@ -65,7 +63,7 @@ main(int argc, char *argv[])
   forming_problem.prepare_increment(0., 0.5);
 
   const types::global_dof_index n_u = forming_problem.n_displacement_dofs();
-  Vector<double> x(forming_problem.get_newton_unknowns());
+  Vector<double>                x(forming_problem.get_newton_unknowns());
   const types::global_dof_index n = x.size();
   // A state with pairs in every state: the centre pushed down under the
   // punch, a random wrinkle, random contact forces, the holder pressed in.
@@ -75,13 +73,13 @@ main(int argc, char *argv[])
   const auto &dofs     = forming_problem.get_dof_handler();
   for (const auto &cell : dofs.active_cell_iterators())
     for (const unsigned int v : cell->vertex_indices())
-      {
-        const Point<3> &X = vertices[cell->vertex_index(v)];
-        for (unsigned int c = 0; c < 3; ++c)
-          x[cell->vertex_dof_index(v, c)] = 0.05 * uniform(random);
-        if (X[0] < 40 && X[1] < 40)
-          x[cell->vertex_dof_index(v, 2)] -= 0.45;
-      }
+    {
+      const Point<3> &X = vertices[cell->vertex_index(v)];
+      for (unsigned int c = 0; c < 3; ++c)
+        x[cell->vertex_dof_index(v, c)] = 0.05 * uniform(random);
+      if (X[0] < 40 && X[1] < 40)
+        x[cell->vertex_dof_index(v, 2)] -= 0.45;
+    }
   for (types::global_dof_index i = n_u; i + 1 < n; ++i)
     x[i] = 2e4 * uniform(random);
   x[n - 1] = -0.01; // holder position along its axis
@@ -89,11 +87,14 @@ main(int argc, char *argv[])
   Vector<double>     residual(n), plus(n), minus(n);
   FullMatrix<double> tangent;
   deepdraw_test::check_true("residual evaluates",
-                            forming_problem.evaluate_residual(x, residual, &tangent));
+                            forming_problem.evaluate_residual(x,
+                                                              residual,
+                                                              &tangent));
   const unsigned int stick = forming_problem.get_contact().n_stick();
   const unsigned int slip  = forming_problem.get_contact().n_slip();
   std::cout << "pairs in stick " << stick << ", in slip " << slip << std::endl;
-  deepdraw_test::check_true("some pairs stick and some slip", stick > 0 && slip > 0);
+  deepdraw_test::check_true("some pairs stick and some slip",
+                            stick > 0 && slip > 0);
 
   // Row scale: the largest entry of each row.
   std::vector<double> row_scale(n, 0.);
@@ -105,34 +106,34 @@ main(int argc, char *argv[])
   unsigned int skipped   = 0;
   unsigned int worst_row = 0, worst_column = 0;
   for (types::global_dof_index j = 0; j < n; ++j)
+  {
+    // Displacements and positions in mm, forces in N.
+    const double   h         = (j >= n_u && j + 1 < n) ? 1e-3 : 1e-7;
+    Vector<double> perturbed = x;
+    perturbed[j] += h;
+    forming_problem.evaluate_residual(perturbed, plus, nullptr);
+    const unsigned int stick_plus = forming_problem.get_contact().n_stick();
+    perturbed[j] -= 2 * h;
+    forming_problem.evaluate_residual(perturbed, minus, nullptr);
+    if (stick_plus != forming_problem.get_contact().n_stick()
+        || stick_plus != stick)
     {
-      // Displacements and positions in mm, forces in N.
-      const double h = (j >= n_u && j + 1 < n) ? 1e-3 : 1e-7;
-      Vector<double> perturbed = x;
-      perturbed[j] += h;
-      forming_problem.evaluate_residual(perturbed, plus, nullptr);
-      const unsigned int stick_plus = forming_problem.get_contact().n_stick();
-      perturbed[j] -= 2 * h;
-      forming_problem.evaluate_residual(perturbed, minus, nullptr);
-      if (stick_plus != forming_problem.get_contact().n_stick()
-          || stick_plus != stick)
-        {
-          ++skipped;
-          continue;
-        }
-      for (types::global_dof_index i = 0; i < n; ++i)
-        {
-          const double fd    = (plus[i] - minus[i]) / (2 * h);
-          const double error = std::abs(fd - tangent(i, j))
-                               / std::max(row_scale[i], 1e-300);
-          if (error > worst)
-            {
-              worst        = error;
-              worst_row    = i;
-              worst_column = j;
-            }
-        }
+      ++skipped;
+      continue;
     }
+    for (types::global_dof_index i = 0; i < n; ++i)
+    {
+      const double fd = (plus[i] - minus[i]) / (2 * h);
+      const double error
+        = std::abs(fd - tangent(i, j)) / std::max(row_scale[i], 1e-300);
+      if (error > worst)
+      {
+        worst        = error;
+        worst_row    = i;
+        worst_column = j;
+      }
+    }
+  }
   std::cout << n << " unknowns (" << n_u << " displacements), " << skipped
             << " columns skipped at kinks; worst entry at row " << worst_row
             << ", column " << worst_column << std::endl;

@@ -2,13 +2,11 @@
 // (DESIGN §1.2): compare it with central finite differences on a small
 // distorted mesh, in an elastic and in a plastic state, with and without
 // selective reduced integration, after a few increments with rotation.
-#include <deal.II/base/mpi.h>
-
-#include <deepdraw/problem/forming_problem.h>
-
-#include <random>
-
 #include "test_utilities.h"
+
+#include <deal.II/base/mpi.h>
+#include <deepdraw/problem/forming_problem.h>
+#include <random>
 
 using namespace dealii;
 using namespace deepdraw;
@@ -24,14 +22,18 @@ namespace
            "  set Layers through thickness = 2\n  set Symmetry planes = x\n"
            "  set Mesh distortion = 0.2\nend\n"
            "subsection Material\n  set Prager modulus = 1000\nend\n"
-           "subsection Finite element\n  set Integration = " + integration + "\nend\n"
-           "subsection Boundary conditions\n"
-           "  set Prescribed displacements = zmin: uz = 0; ymin: uy = 0; "
-           "xmax: ux = 0.05*t; xmax: uz = 0.2*t*(x-1)\nend\n"
-           "subsection Load stepping\n  set Final load = " + std::to_string(final_load) +
-           "\n  set Initial increment = 0.25\n  set Maximum increment = 0.25\nend\n"
-           "subsection Output\n  set Output directory = tangent-test-output\n"
-           "  set Write VTU = false\nend\n";
+           "subsection Finite element\n  set Integration = "
+           + integration
+           + "\nend\n"
+             "subsection Boundary conditions\n"
+             "  set Prescribed displacements = zmin: uz = 0; ymin: uy = 0; "
+             "xmax: ux = 0.05*t; xmax: uz = 0.2*t*(x-1)\nend\n"
+             "subsection Load stepping\n  set Final load = "
+           + std::to_string(final_load)
+           + "\n  set Initial increment = 0.25\n  set Maximum increment = "
+             "0.25\nend\n"
+             "subsection Output\n  set Output directory = tangent-test-output\n"
+             "  set Write VTU = false\nend\n";
   }
 
   void
@@ -57,24 +59,26 @@ namespace
     Vector<double>     residual(n), plus(n), minus(n);
     FullMatrix<double> tangent;
     deepdraw_test::check_true("residual evaluates",
-               forming_problem.evaluate_residual(du, residual, &tangent));
+                              forming_problem.evaluate_residual(du,
+                                                                residual,
+                                                                &tangent));
 
     const double h         = 1e-7;
     double       max_error = 0., max_entry = 0.;
     for (unsigned int j = 0; j < n; ++j)
+    {
+      Vector<double> perturbed = du;
+      perturbed[j] += h;
+      forming_problem.evaluate_residual(perturbed, plus, nullptr);
+      perturbed[j] -= 2 * h;
+      forming_problem.evaluate_residual(perturbed, minus, nullptr);
+      for (unsigned int i = 0; i < n; ++i)
       {
-        Vector<double> perturbed = du;
-        perturbed[j] += h;
-        forming_problem.evaluate_residual(perturbed, plus, nullptr);
-        perturbed[j] -= 2 * h;
-        forming_problem.evaluate_residual(perturbed, minus, nullptr);
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            const double fd = (plus[i] - minus[i]) / (2 * h);
-            max_error       = std::max(max_error, std::abs(fd - tangent(i, j)));
-            max_entry       = std::max(max_entry, std::abs(tangent(i, j)));
-          }
+        const double fd = (plus[i] - minus[i]) / (2 * h);
+        max_error       = std::max(max_error, std::abs(fd - tangent(i, j)));
+        max_entry       = std::max(max_entry, std::abs(tangent(i, j)));
       }
+    }
     // Central differences with h = 1e-7 on entries ~1e4: truncation and
     // round-off both ~1e-6 relative.
     deepdraw_test::check_close("max |K - K_fd| / max |K|",

@@ -3,15 +3,13 @@
 // gradient gives Q equal to each incremental rotation exactly (Cayley
 // transform), so the stress must end as Q sigma Q^T with unchanged
 // invariants, and the orthotropy axes must have turned with the material.
-#include <deal.II/base/parameter_handler.h>
+#include "test_utilities.h"
 
+#include <cmath>
+#include <deal.II/base/parameter_handler.h>
 #include <deepdraw/material/hill_plasticity.h>
 #include <deepdraw/material/material_parameters.h>
 #include <deepdraw/problem/quadrature_point_update.h>
-
-#include <cmath>
-
-#include "test_utilities.h"
 
 using namespace dealii;
 using namespace deepdraw;
@@ -58,44 +56,60 @@ namespace
     H[0][1] = 0.004;
     H[2][0] = -0.003;
     deepdraw_test::check_true("pre-stressing increment succeeds",
-                              problem::update_quadrature_point(material, state, H, next, P, nullptr, plastic)
+                              problem::update_quadrature_point(material,
+                                                               state,
+                                                               H,
+                                                               next,
+                                                               P,
+                                                               nullptr,
+                                                               plastic)
                                 == problem::PointStatus::ok);
     deepdraw_test::check_true("pre-stress is plastic", plastic);
     state = next;
 
     const Tensor<2, 3> sigma_0 = problem::cauchy_stress(state);
-    const Tensor<2, 3> X_0 = state.material_axes
+    const Tensor<2, 3> X_0     = state.material_axes
                              * Tensor<2, 3>(state.state.back_stress)
                              * transpose(state.material_axes);
-    const Tensor<2, 3> axes_0 = state.material_axes;
+    const Tensor<2, 3> axes_0           = state.material_axes;
     const double       plastic_strain_0 = state.state.equivalent_plastic_strain;
 
     const double       angle = 0.5 * M_PI;
     const Tensor<2, 3> step  = rotation_matrix(axis, angle / n_increments);
     for (unsigned int i = 0; i < n_increments; ++i)
-      {
-        // Rigid rotation of the increment: F = step, H = step - I.
-        const Tensor<2, 3> H_rotation =
-          step - Tensor<2, 3>(unit_symmetric_tensor<3>());
-        problem::update_quadrature_point(material, state, H_rotation, next, P, nullptr, plastic);
-        state = next;
-      }
+    {
+      // Rigid rotation of the increment: F = step, H = step - I.
+      const Tensor<2, 3> H_rotation
+        = step - Tensor<2, 3>(unit_symmetric_tensor<3>());
+      problem::update_quadrature_point(material,
+                                       state,
+                                       H_rotation,
+                                       next,
+                                       P,
+                                       nullptr,
+                                       plastic);
+      state = next;
+    }
 
-    const Tensor<2, 3> Q       = rotation_matrix(axis, angle);
-    const Tensor<2, 3> sigma   = problem::cauchy_stress(state);
-    const Tensor<2, 3> X = state.material_axes
+    const Tensor<2, 3> Q     = rotation_matrix(axis, angle);
+    const Tensor<2, 3> sigma = problem::cauchy_stress(state);
+    const Tensor<2, 3> X     = state.material_axes
                            * Tensor<2, 3>(state.state.back_stress)
                            * transpose(state.material_axes);
     const double scale = sigma_0.norm();
     deepdraw_test::check_close("|sigma - Q sigma0 Q^T| / |sigma0|",
-                               (sigma - Q * sigma_0 * transpose(Q)).norm() / scale,
+                               (sigma - Q * sigma_0 * transpose(Q)).norm()
+                                 / scale,
                                0.,
                                1e-8);
     deepdraw_test::check_close("|X - Q X0 Q^T| / |X0|",
                                (X - Q * X_0 * transpose(Q)).norm() / X_0.norm(),
                                0.,
                                1e-8);
-    deepdraw_test::check_relative("first invariant", trace(sigma), trace(sigma_0), 1e-8);
+    deepdraw_test::check_relative("first invariant",
+                                  trace(sigma),
+                                  trace(sigma_0),
+                                  1e-8);
     deepdraw_test::check_relative("second invariant",
                                   second_invariant(sigma),
                                   second_invariant(sigma_0),

@@ -5,13 +5,12 @@
 // the half-step axes) is second-order accurate: assert the error at
 // gamma = 1 with 1000 increments (~4e-8 G expected; bound 1e-6 G) and that
 // halving the increment divides the error by about four.
+#include "test_utilities.h"
+
+#include <cmath>
 #include <deepdraw/material/hill_plasticity.h>
 #include <deepdraw/material/material_parameters.h>
 #include <deepdraw/problem/quadrature_point_update.h>
-
-#include <cmath>
-
-#include "test_utilities.h"
 
 using namespace dealii;
 using namespace deepdraw;
@@ -25,8 +24,8 @@ namespace
     material::MaterialParameters parameters;
     parameters.swift_coefficient = 1e12; // stays elastic
     const material::HillPlasticity material(parameters);
-    const double                   G =
-      parameters.youngs_modulus / (2. * (1. + parameters.poissons_ratio));
+    const double                   G
+      = parameters.youngs_modulus / (2. * (1. + parameters.poissons_ratio));
 
     const double gamma_end = 1.;
     // x_{n+1} = (I + d_gamma e1 (x) e2) x_n: the same H every increment.
@@ -37,22 +36,27 @@ namespace
     Tensor<2, 3>                    P;
     bool                            plastic = false;
     for (unsigned int i = 0; i < n_increments; ++i)
-      {
-        problem::update_quadrature_point(
-          material, state, H, next, P, nullptr, plastic);
-        state = next;
-      }
+    {
+      problem::update_quadrature_point(material,
+                                       state,
+                                       H,
+                                       next,
+                                       P,
+                                       nullptr,
+                                       plastic);
+      state = next;
+    }
     const Tensor<2, 3> sigma = problem::cauchy_stress(state);
     const double       s12   = std::sin(gamma_end);
     const double       s11   = 1. - std::cos(gamma_end);
     if (report)
-      {
-        deepdraw_test::check_close("sigma_12 / G", sigma[0][1] / G, s12, 1e-6);
-        deepdraw_test::check_close("sigma_11 / G", sigma[0][0] / G, s11, 1e-6);
-        deepdraw_test::check_close("sigma_22 / G", sigma[1][1] / G, -s11, 1e-6);
-        deepdraw_test::check_close("sigma_33 / G", sigma[2][2] / G, 0., 1e-6);
-        deepdraw_test::check_true("stayed elastic", !plastic);
-      }
+    {
+      deepdraw_test::check_close("sigma_12 / G", sigma[0][1] / G, s12, 1e-6);
+      deepdraw_test::check_close("sigma_11 / G", sigma[0][0] / G, s11, 1e-6);
+      deepdraw_test::check_close("sigma_22 / G", sigma[1][1] / G, -s11, 1e-6);
+      deepdraw_test::check_close("sigma_33 / G", sigma[2][2] / G, 0., 1e-6);
+      deepdraw_test::check_true("stayed elastic", !plastic);
+    }
     return std::max({std::abs(sigma[0][1] / G - s12),
                      std::abs(sigma[0][0] / G - s11),
                      std::abs(sigma[1][1] / G + s11)});

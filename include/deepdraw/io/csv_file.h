@@ -16,9 +16,11 @@ namespace deepdraw
     {
     public:
       CsvFile() = default;
-      CsvFile(const std::string &filename, const std::vector<std::string> &columns);
+      CsvFile(const std::string              &filename,
+              const std::vector<std::string> &columns);
       void
-      open(const std::string &filename, const std::vector<std::string> &columns);
+      open(const std::string              &filename,
+           const std::vector<std::string> &columns);
       // Numbers with 10 significant digits; throws if the count is wrong.
       void
       add_row(const std::vector<double> &values);
@@ -32,7 +34,8 @@ namespace deepdraw
     // Writes content to filename through a temporary file and a rename, so
     // that the file on disk is always either the old or the new version.
     void
-    write_file_atomically(const std::string &filename, const std::string &content);
+    write_file_atomically(const std::string &filename,
+                          const std::string &content);
   } // namespace io
 } // namespace deepdraw
 

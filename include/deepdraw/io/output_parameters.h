@@ -3,7 +3,6 @@
 #define deepdraw_io_output_parameters_h
 
 #include <deal.II/base/parameter_handler.h>
-
 #include <string>
 
 namespace deepdraw

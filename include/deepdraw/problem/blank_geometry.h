@@ -5,11 +5,9 @@
 #ifndef deepdraw_problem_blank_geometry_h
 #define deepdraw_problem_blank_geometry_h
 
-#include <deal.II/base/parameter_handler.h>
-
-#include <deal.II/grid/tria.h>
-
 #include <array>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/grid/tria.h>
 #include <string>
 #include <vector>
 

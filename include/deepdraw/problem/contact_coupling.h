@@ -10,22 +10,19 @@
 #ifndef deepdraw_problem_contact_coupling_h
 #define deepdraw_problem_contact_coupling_h
 
+#include <array>
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/tensor.h>
-
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
-
 #include <deepdraw/contact/alart_curnier_law.h>
 #include <deepdraw/contact/contact_pair.h>
 #include <deepdraw/contact/contact_parameters.h>
 #include <deepdraw/geometry/rigid_tool.h>
 #include <deepdraw/geometry/square_cup_tools.h>
-
-#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -46,12 +43,12 @@ namespace deepdraw
       std::string geometry;
       std::string file;
       // Boundary id of the sheet face it touches: 4 bottom, 5 top.
-      unsigned int sheet_face = 5;
+      unsigned int sheet_face       = 5;
       bool         force_controlled = false;
       // Displacement control: translation (3 expressions of t, mm).
       std::shared_ptr<FunctionParser<1>> translation;
       // Force control: axis a (unit) and force F(t) in N along a.
-      Tensor<1, 3>                        axis;
+      Tensor<1, 3>                       axis;
       std::shared_ptr<FunctionParser<1>> force;
     };
 
@@ -79,12 +76,12 @@ namespace deepdraw
       // multipliers and tool positions are numbered from first_index.
       // Returns the number of unknowns added.
       unsigned int
-      create_pairs(const std::vector<std::vector<unsigned int>> &face_vertices,
-                   const std::vector<std::array<types::global_dof_index, 3>>
-                                &vertex_dofs,
-                   types::global_dof_index first_index,
-                   double                  youngs_modulus,
-                   double                  element_size);
+      create_pairs(
+        const std::vector<std::vector<unsigned int>> &face_vertices,
+        const std::vector<std::array<types::global_dof_index, 3>> &vertex_dofs,
+        types::global_dof_index                                    first_index,
+        double youngs_modulus,
+        double element_size);
 
       void
       add_sparsity(DynamicSparsityPattern &dsp) const;
@@ -108,12 +105,12 @@ namespace deepdraw
       // constraints; adds the contact forces P to contact_force (by u dof).
       // Returns the number of pairs whose state changed since the last call.
       unsigned int
-      assemble(const std::vector<Point<3>>      &positions,
-               const Vector<double>             &solution,
-               const AffineConstraints<double>  &constraints,
-               SparseMatrix<double>             *matrix,
-               Vector<double>                   &rhs,
-               double                            new_load);
+      assemble(const std::vector<Point<3>>     &positions,
+               const Vector<double>            &solution,
+               const AffineConstraints<double> &constraints,
+               SparseMatrix<double>            *matrix,
+               Vector<double>                  &rhs,
+               double                           new_load);
 
       // sqrt(sum |r F_sup|^2 + sum (holder residual)^2): a force (N).
       double
@@ -130,7 +127,7 @@ namespace deepdraw
         unsigned int status       = 0; // 0 open, 1 stick, 2 slip
         double       normal_force = 0.;
         Tensor<1, 3> friction_force;
-        double       gap          = std::numeric_limits<double>::max();
+        double       gap = std::numeric_limits<double>::max();
       };
       std::vector<NodalContact>
       nodal_contact(unsigned int n_vertices) const;
@@ -157,29 +154,29 @@ namespace deepdraw
     private:
       struct Pair
       {
-        unsigned int                         vertex;
-        unsigned int                         tool;
+        unsigned int                           vertex;
+        unsigned int                           tool;
         std::array<types::global_dof_index, 3> u_dofs;
-        types::global_dof_index              first_multiplier;
-        double                               augmentation;
-        contact::ContactPairResult           result;
-        bool                                 found = false;
+        types::global_dof_index                first_multiplier;
+        double                                 augmentation;
+        contact::ContactPairResult             result;
+        bool                                   found = false;
       };
 
-      contact::ContactParameters             parameters;
-      double                                 search_distance = 2.;
-      std::vector<ToolDefinition>            definitions;
-      std::vector<geometry::RigidTool>       tool_list;
+      contact::ContactParameters       parameters;
+      double                           search_distance = 2.;
+      std::vector<ToolDefinition>      definitions;
+      std::vector<geometry::RigidTool> tool_list;
       // Unknown index of the position of each force-controlled tool
       // (invalid for displacement control).
-      std::vector<types::global_dof_index>   position_dof;
-      std::vector<double>                    position_at_start; // z_n
-      std::vector<Tensor<1, 3>>              translation_at_start;
-      std::vector<Tensor<1, 3>>              translation_at_end;
-      std::vector<Pair>                      pairs;
+      std::vector<types::global_dof_index>      position_dof;
+      std::vector<double>                       position_at_start; // z_n
+      std::vector<Tensor<1, 3>>                 translation_at_start;
+      std::vector<Tensor<1, 3>>                 translation_at_end;
+      std::vector<Pair>                         pairs;
       std::unique_ptr<contact::AlartCurnierLaw> law;
-      double                                 force_regularisation = 1.;
-      double                                 total_search_time    = 0.;
+      double                                    force_regularisation = 1.;
+      double                                    total_search_time    = 0.;
     };
   } // namespace problem
 } // namespace deepdraw

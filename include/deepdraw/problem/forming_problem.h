@@ -7,27 +7,23 @@
 #ifndef deepdraw_problem_forming_problem_h
 #define deepdraw_problem_forming_problem_h
 
+#include <array>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/tensor.h>
-
 #include <deal.II/dofs/dof_handler.h>
-
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
-
 #include <deal.II/grid/tria.h>
-
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
-
+#include <deepdraw/geometry/square_cup_tools.h>
 #include <deepdraw/io/csv_file.h>
 #include <deepdraw/io/output_parameters.h>
 #include <deepdraw/io/pvd_record.h>
 #include <deepdraw/material/hill_plasticity.h>
 #include <deepdraw/material/material_parameters.h>
-#include <deepdraw/geometry/square_cup_tools.h>
 #include <deepdraw/problem/blank_geometry.h>
 #include <deepdraw/problem/contact_coupling.h>
 #include <deepdraw/problem/prescribed_displacements.h>
@@ -35,8 +31,6 @@
 #include <deepdraw/solver/increment_control.h>
 #include <deepdraw/solver/linear_solver.h>
 #include <deepdraw/solver/newton_parameters.h>
-
-#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -172,11 +166,13 @@ namespace deepdraw
       // Assembles f_int, the residual (rhs = -r on free dofs) and, if
       // requested, the tangent; trial history from du.
       IncrementOutcome
-      assemble(const Vector<double>        &displacement_increment,
+      assemble(const Vector<double>            &displacement_increment,
                const AffineConstraints<double> &constraints,
-               bool                         assemble_matrix);
+               bool                             assemble_matrix);
       IncrementOutcome
-      solve_increment(double old_load, double new_load, unsigned int &iterations);
+      solve_increment(double        old_load,
+                      double        new_load,
+                      unsigned int &iterations);
       void
       commit_increment();
       void
@@ -189,16 +185,16 @@ namespace deepdraw
       write_increment_tables(double load);
 
       // Parameters
-      BlankGeometry                         geometry;
-      material::MaterialParameters          material_parameters;
-      PrescribedDisplacements               prescribed;
-      solver::IncrementControlParameters    increment_parameters;
-      solver::NewtonParameters              newton_parameters;
-      solver::LinearSolverParameters        linear_solver_parameters;
-      io::OutputParameters                  output_parameters;
-      geometry::SquareCupToolParameters     square_cup_tool_parameters;
-      ContactCoupling                       contact;
-      bool                                  selective_reduced_integration = true;
+      BlankGeometry                      geometry;
+      material::MaterialParameters       material_parameters;
+      PrescribedDisplacements            prescribed;
+      solver::IncrementControlParameters increment_parameters;
+      solver::NewtonParameters           newton_parameters;
+      solver::LinearSolverParameters     linear_solver_parameters;
+      io::OutputParameters               output_parameters;
+      geometry::SquareCupToolParameters  square_cup_tool_parameters;
+      ContactCoupling                    contact;
+      bool                               selective_reduced_integration = true;
 
       std::unique_ptr<material::HillPlasticity> material;
 
@@ -211,23 +207,25 @@ namespace deepdraw
       DoFHandler<3>             dof_handler;
       FE_Q<3>                   fe_scalar;
       DoFHandler<3>             scalar_dof_handler;
-      // local dof i of a cell = component local_component[i] of node local_node[i]
-      std::array<unsigned int, 24> local_component;
-      std::array<unsigned int, 24> local_node;
+      // local dof i of a cell = component local_component[i] of node
+      // local_node[i]
+      std::array<unsigned int, 24>                        local_component;
+      std::array<unsigned int, 24>                        local_node;
       std::vector<std::array<types::global_dof_index, 3>> vertex_dofs;
-      std::vector<Point<3>>        dof_initial_position;
-      std::vector<unsigned int>    dof_component;
-      std::vector<CellGeometry>    cell_geometry;
+      std::vector<Point<3>>                               dof_initial_position;
+      std::vector<unsigned int>                           dof_component;
+      std::vector<CellGeometry>                           cell_geometry;
       std::array<std::vector<types::global_dof_index>, 6> face_dofs;
 
       // Constrained dofs with their prescribed displacement entry.
-      std::vector<std::pair<types::global_dof_index, const PrescribedDisplacement *>>
-                                prescribed_dofs;
+      std::vector<
+        std::pair<types::global_dof_index, const PrescribedDisplacement *>>
+        prescribed_dofs;
       // Contact-force components along prescribed displacement components
       // (held at zero, see ContactCoupling::multiplier_partners).
       std::vector<types::global_dof_index> constrained_multipliers;
-      AffineConstraints<double> homogeneous_constraints;
-      AffineConstraints<double> predictor_constraints;
+      AffineConstraints<double>            homogeneous_constraints;
+      AffineConstraints<double>            predictor_constraints;
 
       SparsityPattern      sparsity_pattern;
       SparseMatrix<double> system_matrix;
@@ -237,9 +235,9 @@ namespace deepdraw
       // The Newton unknowns: displacement increment (first
       // n_displacement_dofs entries), then contact forces and tool
       // positions (absolute values).
-      Vector<double>       displacement_increment;
-      Vector<double>       converged_solution;
-      double               target_load = 0.;
+      Vector<double> displacement_increment;
+      Vector<double> converged_solution;
+      double         target_load = 0.;
 
       std::vector<QuadraturePointHistory> history;
       std::vector<QuadraturePointHistory> trial_history;
@@ -250,7 +248,7 @@ namespace deepdraw
       std::vector<double> column_thickness;
       std::vector<double> residual_history;
       std::vector<double> contact_residual_history;
-      unsigned int        contact_changes = 0;
+      unsigned int        contact_changes  = 0;
       unsigned int        n_plastic_points = 0;
 
       // Timers of the current increment (seconds)
@@ -264,7 +262,7 @@ namespace deepdraw
       io::CsvFile                    reactions_file;
       io::CsvFile                    tools_file;
       std::vector<unsigned int>      reaction_faces;
-      unsigned int                   output_step = 0;
+      unsigned int                   output_step      = 0;
       unsigned int                   increment_number = 0;
     };
   } // namespace problem

@@ -11,7 +11,6 @@
 
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
-
 #include <memory>
 #include <string>
 #include <vector>
@@ -24,9 +23,9 @@ namespace deepdraw
 
     struct PrescribedDisplacement
     {
-      unsigned int                     boundary_id;
-      unsigned int                     component;
-      std::string                      expression;
+      unsigned int                       boundary_id;
+      unsigned int                       component;
+      std::string                        expression;
       std::shared_ptr<FunctionParser<3>> function; // of (x, y, z) and t
     };
 

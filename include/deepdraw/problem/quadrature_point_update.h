@@ -16,7 +16,6 @@
 #define deepdraw_problem_quadrature_point_update_h
 
 #include <deal.II/base/tensor.h>
-
 #include <deepdraw/material/hill_plasticity.h>
 #include <deepdraw/material/material_point_state.h>
 

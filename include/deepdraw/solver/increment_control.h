@@ -5,7 +5,6 @@
 #define deepdraw_solver_increment_control_h
 
 #include <deal.II/base/parameter_handler.h>
-
 #include <vector>
 
 namespace deepdraw
@@ -16,14 +15,14 @@ namespace deepdraw
 
     struct IncrementControlParameters
     {
-      double       final_load            = 1.;
-      double       initial_increment     = 0.1;
-      double       minimum_increment     = 1e-6;
-      double       maximum_increment     = 0.1;
-      double       cut_back_factor       = 0.5;
-      double       growth_factor         = 1.5;
-      unsigned int easy_iterations       = 4;
-      unsigned int maximum_cut_backs     = 12;
+      double       final_load        = 1.;
+      double       initial_increment = 0.1;
+      double       minimum_increment = 1e-6;
+      double       maximum_increment = 0.1;
+      double       cut_back_factor   = 0.5;
+      double       growth_factor     = 1.5;
+      unsigned int easy_iterations   = 4;
+      unsigned int maximum_cut_backs = 12;
 
       static void
       declare_parameters(ParameterHandler &prm);

@@ -4,10 +4,8 @@
 #define deepdraw_solver_linear_solver_h
 
 #include <deal.II/base/parameter_handler.h>
-
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
-
 #include <memory>
 #include <string>
 

@@ -17,9 +17,9 @@ namespace deepdraw
       double       correction_tolerance = 1e-6;
       // Residual growth over the smallest residual seen in the increment
       // that counts as divergence.
-      double       divergence_ratio     = 1e4;
+      double divergence_ratio = 1e4;
       // Halvings of the Newton step allowed by the line search (0: none).
-      unsigned int line_search_steps    = 4;
+      unsigned int line_search_steps = 4;
 
       static void
       declare_parameters(ParameterHandler &prm);
