@@ -107,32 +107,34 @@ namespace deepdraw
             dof_component[dof]                    = c;
           }
 
-      for (const auto &cell : dof_handler.active_cell_iterators())
+      // Vertices of each face of the blank (by boundary id), sorted.
+      std::vector<std::vector<unsigned int>> face_vertices(6);
+      for (const auto &cell : triangulation.active_cell_iterators())
         for (const auto &face : cell->face_iterators())
           if (face->at_boundary())
             for (const unsigned int v : face->vertex_indices())
-              for (unsigned int c = 0; c < 3; ++c)
-                face_dofs[face->boundary_id()].push_back(
-                  face->vertex_dof_index(v, c));
-      for (auto &dofs : face_dofs)
+              face_vertices[face->boundary_id()].push_back(
+                face->vertex_index(v));
+      for (unsigned int id = 0; id < face_vertices.size(); ++id)
       {
-        std::sort(dofs.begin(), dofs.end());
-        dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+        auto &vertices = face_vertices[id];
+        std::sort(vertices.begin(), vertices.end());
+        vertices.erase(std::unique(vertices.begin(), vertices.end()),
+                       vertices.end());
+        face_dofs[id].clear();
+        for (const unsigned int vertex : vertices)
+          face_dofs[id].insert(face_dofs[id].end(),
+                               vertex_dofs[vertex].begin(),
+                               vertex_dofs[vertex].end());
+        std::sort(face_dofs[id].begin(), face_dofs[id].end());
       }
 
       // Prescribed dofs; a later entry overrides an earlier one.
       std::map<types::global_dof_index, const PrescribedDisplacement *> owner;
       for (const PrescribedDisplacement &entry : prescribed.entries)
-        for (const auto &cell : dof_handler.active_cell_iterators())
-          for (const auto &face : cell->face_iterators())
-            if (face->at_boundary() && face->boundary_id() == entry.boundary_id)
-              for (const unsigned int v : face->vertex_indices())
-                owner[face->vertex_dof_index(v, entry.component)] = &entry;
+        for (const unsigned int vertex : face_vertices[entry.boundary_id])
+          owner[vertex_dofs[vertex][entry.component]] = &entry;
       prescribed_dofs.assign(owner.begin(), owner.end());
-
-      std::set<types::global_dof_index> prescribed_set;
-      for (const auto &[dof, entry] : prescribed_dofs)
-        prescribed_set.insert(dof);
 
       // Contact unknowns follow the displacements (block system of
       // reference Eq. 19).
@@ -140,19 +142,6 @@ namespace deepdraw
       if (contact.active())
       {
         contact.create_tools(square_cup_tool_parameters, geometry.thickness);
-        std::vector<std::vector<unsigned int>> face_vertices(6);
-        for (const auto &cell : triangulation.active_cell_iterators())
-          for (const auto &face : cell->face_iterators())
-            if (face->at_boundary())
-              for (const unsigned int v : face->vertex_indices())
-                face_vertices[face->boundary_id()].push_back(
-                  face->vertex_index(v));
-        for (auto &vertices : face_vertices)
-        {
-          std::sort(vertices.begin(), vertices.end());
-          vertices.erase(std::unique(vertices.begin(), vertices.end()),
-                         vertices.end());
-        }
         const double element_size
           = std::sqrt(geometry.length / geometry.elements_along_x
                       * geometry.width / geometry.elements_along_y);
@@ -165,7 +154,7 @@ namespace deepdraw
 
       constrained_multipliers.clear();
       for (const auto &[u_dof, multiplier] : contact.multiplier_partners())
-        if (prescribed_set.count(u_dof) > 0)
+        if (owner.count(u_dof) > 0)
           constrained_multipliers.push_back(multiplier);
       homogeneous_constraints.clear();
       homogeneous_constraints.reinit(complete_index_set(n_unknowns));
