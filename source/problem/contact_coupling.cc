@@ -557,6 +557,17 @@ namespace deepdraw
     }
 
 
+    std::vector<types::global_dof_index>
+    ContactCoupling::tool_position_unknowns() const
+    {
+      std::vector<types::global_dof_index> unknowns;
+      for (const auto dof : position_dof)
+        if (dof != numbers::invalid_dof_index)
+          unknowns.push_back(dof);
+      return unknowns;
+    }
+
+
     unsigned int
     ContactCoupling::n_stick() const
     {

@@ -375,7 +375,10 @@ namespace deepdraw
         Timer timer;
         try
         {
-          linear_solver->solve(system_matrix, system_rhs, correction);
+          linear_solver->solve(system_matrix,
+                               system_rhs,
+                               correction,
+                               contact.tool_position_unknowns());
         }
         catch (const std::exception &error)
         {

@@ -1,7 +1,12 @@
+#include <Amesos_Klu.h>
+#include <Amesos_Mumps.h>
+#include <Epetra_CrsMatrix.h>
+#include <Epetra_LinearProblem.h>
+#include <Epetra_Vector.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparse_direct.h>
-#include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
-#include <deal.II/lac/trilinos_vector.h>
 #include <deepdraw/solver/linear_solver.h>
 #include <stdexcept>
 
@@ -34,9 +39,88 @@ namespace deepdraw
 
     struct LinearSolver::Implementation
     {
-      SparseDirectUMFPACK            umfpack;
-      TrilinosWrappers::SparseMatrix trilinos_matrix;
+      // Factorises `matrix` with the chosen package; back_substitute() then
+      // solves with it for any number of right-hand sides.
+      void
+      factorize(const std::string &type, const SparseMatrix<double> &matrix);
+      void
+      back_substitute(const Vector<double> &rhs, Vector<double> &solution);
+
+      std::string                           type;
+      SparseDirectUMFPACK                   umfpack;
+      TrilinosWrappers::SparseMatrix        trilinos_matrix;
+      std::unique_ptr<Epetra_Vector>        epetra_rhs, epetra_solution;
+      std::unique_ptr<Epetra_LinearProblem> epetra_problem;
+      std::unique_ptr<Amesos_BaseSolver>    amesos;
+
+      // The matrix without the bordered unknowns: its pattern is rebuilt
+      // only when the full pattern or the bordered set changes.
+      const SparsityPattern               *full_pattern  = nullptr;
+      std::size_t                          full_nonzeros = 0;
+      std::vector<types::global_dof_index> bordered_of_pattern;
+      std::vector<types::global_dof_index> reduced_index;
+      SparsityPattern                      reduced_pattern;
+      SparseMatrix<double>                 reduced_matrix;
     };
+
+
+    void
+    LinearSolver::Implementation::factorize(const std::string          &type,
+                                            const SparseMatrix<double> &matrix)
+    {
+      this->type = type;
+      if (type == "UMFPACK")
+      {
+        umfpack.initialize(matrix);
+        return;
+      }
+      // Amesos directly rather than through TrilinosWrappers::SolverDirect:
+      // MUMPS needs more working space than its default estimate (ICNTL(14),
+      // in percent) when zero diagonals of the contact rows delay pivots.
+      // The old solver refers to the old problem and matrix: release it
+      // first.
+      amesos.reset();
+      trilinos_matrix.reinit(matrix);
+      const Epetra_CrsMatrix &epetra = trilinos_matrix.trilinos_matrix();
+      epetra_rhs      = std::make_unique<Epetra_Vector>(epetra.RangeMap());
+      epetra_solution = std::make_unique<Epetra_Vector>(epetra.DomainMap());
+      epetra_problem
+        = std::make_unique<Epetra_LinearProblem>(const_cast<Epetra_CrsMatrix *>(
+                                                   &epetra),
+                                                 epetra_solution.get(),
+                                                 epetra_rhs.get());
+      if (type == "MUMPS")
+      {
+        auto mumps = std::make_unique<Amesos_Mumps>(*epetra_problem);
+        mumps->SetICNTL(14, 400);
+        amesos = std::move(mumps);
+      }
+      else
+        amesos = std::make_unique<Amesos_Klu>(*epetra_problem);
+      if (amesos->SymbolicFactorization() != 0
+          || amesos->NumericFactorization() != 0)
+        throw std::runtime_error("Amesos " + type
+                                 + " could not factorise the matrix");
+    }
+
+
+    void
+    LinearSolver::Implementation::back_substitute(const Vector<double> &rhs,
+                                                  Vector<double> &solution)
+    {
+      solution.reinit(rhs.size());
+      if (type == "UMFPACK")
+      {
+        umfpack.vmult(solution, rhs);
+        return;
+      }
+      for (unsigned int i = 0; i < rhs.size(); ++i)
+        (*epetra_rhs)[i] = rhs[i];
+      if (amesos->Solve() != 0)
+        throw std::runtime_error("Amesos " + type + " could not solve");
+      for (unsigned int i = 0; i < solution.size(); ++i)
+        solution[i] = (*epetra_solution)[i];
+    }
 
 
     LinearSolver::LinearSolver(const LinearSolverParameters &parameters)
@@ -50,37 +134,105 @@ namespace deepdraw
 
 
     void
-    LinearSolver::solve(const SparseMatrix<double> &matrix,
-                        const Vector<double>       &rhs,
-                        Vector<double>             &solution)
+    LinearSolver::solve(const SparseMatrix<double>                 &matrix,
+                        const Vector<double>                       &rhs,
+                        Vector<double>                             &solution,
+                        const std::vector<types::global_dof_index> &bordered)
     {
       try
       {
-        if (parameters.type == "UMFPACK")
+        if (bordered.empty())
         {
-          implementation->umfpack.initialize(matrix);
-          implementation->umfpack.vmult(solution, rhs);
+          implementation->factorize(parameters.type, matrix);
+          implementation->back_substitute(rhs, solution);
           return;
         }
 
-        implementation->trilinos_matrix.reinit(matrix);
-        const IndexSet                all = complete_index_set(matrix.m());
-        TrilinosWrappers::MPI::Vector trilinos_rhs(all, MPI_COMM_SELF);
-        TrilinosWrappers::MPI::Vector trilinos_solution(all, MPI_COMM_SELF);
-        for (unsigned int i = 0; i < rhs.size(); ++i)
-          trilinos_rhs[i] = rhs[i];
-        trilinos_rhs.compress(VectorOperation::insert);
+        Implementation               &data    = *implementation;
+        const SparsityPattern        &pattern = matrix.get_sparsity_pattern();
+        const types::global_dof_index n       = matrix.m();
+        const unsigned int            n_b     = bordered.size();
+        if (data.full_pattern != &pattern
+            || data.full_nonzeros != pattern.n_nonzero_elements()
+            || data.bordered_of_pattern != bordered)
+        {
+          data.full_pattern        = &pattern;
+          data.full_nonzeros       = pattern.n_nonzero_elements();
+          data.bordered_of_pattern = bordered;
+          data.reduced_index.assign(n, 0);
+          for (const auto dof : bordered)
+            data.reduced_index[dof] = numbers::invalid_dof_index;
+          types::global_dof_index next = 0;
+          for (auto &index : data.reduced_index)
+            if (index != numbers::invalid_dof_index)
+              index = next++;
+          DynamicSparsityPattern dsp(next, next);
+          for (types::global_dof_index i = 0; i < n; ++i)
+            if (data.reduced_index[i] != numbers::invalid_dof_index)
+              for (auto entry = pattern.begin(i); entry != pattern.end(i);
+                   ++entry)
+                if (data.reduced_index[entry->column()]
+                    != numbers::invalid_dof_index)
+                  dsp.add(data.reduced_index[i],
+                          data.reduced_index[entry->column()]);
+          data.reduced_pattern.copy_from(dsp);
+          data.reduced_matrix.reinit(data.reduced_pattern);
+        }
 
-        SolverControl                                  control(1, 0);
-        TrilinosWrappers::SolverDirect::AdditionalData data(
-          false,
-          parameters.type == "MUMPS" ? "Amesos_Mumps" : "Amesos_Klu");
-        TrilinosWrappers::SolverDirect direct(control, data);
-        direct.solve(implementation->trilinos_matrix,
-                     trilinos_solution,
-                     trilinos_rhs);
-        for (unsigned int i = 0; i < solution.size(); ++i)
-          solution[i] = trilinos_solution[i];
+        // A = [M C; D E] in the bordered unknowns b (columns of C, rows of
+        // D) and the rest.
+        const types::global_dof_index n_m = data.reduced_pattern.n_rows();
+        std::vector<Vector<double>>   columns(n_b, Vector<double>(n_m));
+        std::vector<Vector<double>>   rows(n_b, Vector<double>(n_m));
+        FullMatrix<double>            corner(n_b, n_b);
+        std::vector<int>              border_position(n, -1);
+        for (unsigned int k = 0; k < n_b; ++k)
+          border_position[bordered[k]] = k;
+        data.reduced_matrix = 0.;
+        for (types::global_dof_index i = 0; i < n; ++i)
+          for (auto entry = matrix.begin(i); entry != matrix.end(i); ++entry)
+          {
+            const auto   j     = entry->column();
+            const double value = entry->value();
+            const int    bi = border_position[i], bj = border_position[j];
+            if (bi < 0 && bj < 0)
+              data.reduced_matrix.set(data.reduced_index[i],
+                                      data.reduced_index[j],
+                                      value);
+            else if (bi < 0)
+              columns[bj][data.reduced_index[i]] = value;
+            else if (bj < 0)
+              rows[bi][data.reduced_index[j]] = value;
+            else
+              corner(bi, bj) = value;
+          }
+
+        data.factorize(parameters.type, data.reduced_matrix);
+        Vector<double> reduced_rhs(n_m), y(n_m);
+        for (types::global_dof_index i = 0; i < n; ++i)
+          if (border_position[i] < 0)
+            reduced_rhs[data.reduced_index[i]] = rhs[i];
+        data.back_substitute(reduced_rhs, y);
+        // S = E - D M^-1 C, z = S^-1 (f_b - D M^-1 f), x = M^-1 f - M^-1 C z.
+        std::vector<Vector<double>> inverse_columns(n_b);
+        FullMatrix<double>          schur(corner);
+        Vector<double>              border_rhs(n_b), z(n_b);
+        for (unsigned int k = 0; k < n_b; ++k)
+        {
+          data.back_substitute(columns[k], inverse_columns[k]);
+          border_rhs[k] = rhs[bordered[k]] - rows[k] * y;
+        }
+        for (unsigned int k = 0; k < n_b; ++k)
+          for (unsigned int l = 0; l < n_b; ++l)
+            schur(k, l) -= rows[k] * inverse_columns[l];
+        schur.gauss_jordan();
+        schur.vmult(z, border_rhs);
+        for (unsigned int k = 0; k < n_b; ++k)
+          y.add(-z[k], inverse_columns[k]);
+        solution.reinit(n);
+        for (types::global_dof_index i = 0; i < n; ++i)
+          solution[i] = border_position[i] < 0 ? y[data.reduced_index[i]]
+                                               : z[border_position[i]];
       }
       catch (const std::exception &error)
       {

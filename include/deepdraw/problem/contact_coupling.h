@@ -140,6 +140,9 @@ namespace deepdraw
       tools() const;
       const std::vector<ToolDefinition> &
       tool_definitions() const;
+      // Unknowns of the positions of the force-controlled tools.
+      std::vector<types::global_dof_index>
+      tool_position_unknowns() const;
       // Counts of pairs in stick and slip after the last assemble().
       unsigned int
       n_stick() const;
