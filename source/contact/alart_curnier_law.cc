@@ -77,9 +77,13 @@ namespace deepdraw
         // Open: P = 0, F_sup = λ/r.
         result.state = ContactState::open;
       }
-      else if (mu > 0. && norm_a_T <= mu * a_N)
+      else if (mu > 0. && (norm_a_T == 0. || norm_a_T < (1. - 1e-8) * mu * a_N))
       {
         // Stick: P = λ̂, so F_sup = ĝ; P does not depend on n at fixed λ̂.
+        // On the cone (|λ̂_T| = μ λ̂_N up to rounding) slip is taken: a
+        // pair that slipped in the last increment starts the next one on
+        // the cone (ĝ_T = 0), and going on slipping is the likely answer;
+        // calling it stick cost every increment two extra iterations.
         result.state = ContactState::stick;
         result.force = a;
         D            = I;
