@@ -3,12 +3,14 @@
 #include <Epetra_CrsMatrix.h>
 #include <Epetra_LinearProblem.h>
 #include <Epetra_Vector.h>
+#include <algorithm>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
-#include <deal.II/lac/sparse_direct.h>
+#include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deepdraw/solver/linear_solver.h>
 #include <stdexcept>
+#include <umfpack.h>
 
 namespace deepdraw
 {
@@ -37,6 +39,164 @@ namespace deepdraw
     }
 
 
+    namespace
+    {
+      // UMFPACK called directly so that the symbolic analysis (fill-reducing
+      // ordering) is kept while the pattern stays the same: Newton changes
+      // the values only, and contact state changes only zero entries of a
+      // fixed pattern. deal.II's SparseDirectUMFPACK redoes it every time.
+      // The CSR matrix is handed over as the CSC storage of its transpose
+      // and solved with UMFPACK_At.
+      class UmfpackFactorization
+      {
+      public:
+        ~UmfpackFactorization()
+        {
+          clear();
+        }
+
+        void
+        factorize(const SparseMatrix<double> &matrix)
+        {
+          const SparsityPattern &pattern = matrix.get_sparsity_pattern();
+          if (!has_pattern(pattern))
+          {
+            clear();
+            set_up_storage(pattern);
+          }
+          std::size_t k = 0;
+          for (types::global_dof_index i = 0; i < matrix.m(); ++i)
+            for (auto entry = matrix.begin(i); entry != matrix.end(i);
+                 ++entry, ++k)
+              values[position[k]] = entry->value();
+
+          if (numeric != nullptr)
+            umfpack_dl_free_numeric(&numeric);
+          if (symbolic != nullptr && numeric_factorization())
+            return;
+          // First factorisation of this pattern, or the kept ordering gave a
+          // singular or badly conditioned factorisation: analyse afresh.
+          if (symbolic != nullptr)
+            umfpack_dl_free_symbolic(&symbolic);
+          const SuiteSparse_long n      = row_start.size() - 1;
+          const int              status = umfpack_dl_symbolic(n,
+                                                 n,
+                                                 row_start.data(),
+                                                 column_index.data(),
+                                                 values.data(),
+                                                 &symbolic,
+                                                 nullptr,
+                                                 nullptr);
+          if (status != UMFPACK_OK || !numeric_factorization())
+            throw std::runtime_error("UMFPACK could not factorise the matrix "
+                                     "(status "
+                                     + std::to_string(status) + ")");
+        }
+
+        void
+        solve(const Vector<double> &rhs, Vector<double> &solution) const
+        {
+          solution.reinit(rhs.size());
+          const int status = umfpack_dl_solve(UMFPACK_At,
+                                              row_start.data(),
+                                              column_index.data(),
+                                              values.data(),
+                                              solution.data(),
+                                              rhs.data(),
+                                              numeric,
+                                              nullptr,
+                                              nullptr);
+          if (status != UMFPACK_OK)
+            throw std::runtime_error("UMFPACK could not solve (status "
+                                     + std::to_string(status) + ")");
+        }
+
+      private:
+        // A pattern object may be rebuilt in place: compare the entries
+        // (cheap next to a factorisation).
+        bool
+        has_pattern(const SparsityPattern &pattern) const
+        {
+          if (symbolic == nullptr || pattern.n_rows() + 1 != row_start.size()
+              || pattern.n_nonzero_elements() != column_index.size())
+            return false;
+          std::size_t k = 0;
+          for (types::global_dof_index i = 0; i < pattern.n_rows(); ++i)
+            for (auto entry = pattern.begin(i); entry != pattern.end(i);
+                 ++entry, ++k)
+              if (static_cast<types::global_dof_index>(
+                    column_index[position[k]])
+                  != entry->column())
+                return false;
+          return true;
+        }
+
+        void
+        set_up_storage(const SparsityPattern &pattern)
+        {
+          const types::global_dof_index n = pattern.n_rows();
+          row_start.assign(n + 1, 0);
+          column_index.resize(pattern.n_nonzero_elements());
+          values.resize(pattern.n_nonzero_elements());
+          position.resize(pattern.n_nonzero_elements());
+          // deal.II stores the diagonal first in each row; UMFPACK wants
+          // sorted indices.
+          std::vector<std::pair<types::global_dof_index, std::size_t>> row;
+          std::size_t                                                  k = 0;
+          for (types::global_dof_index i = 0; i < n; ++i)
+          {
+            row.clear();
+            for (auto entry = pattern.begin(i); entry != pattern.end(i);
+                 ++entry, ++k)
+              row.emplace_back(entry->column(), k);
+            std::sort(row.begin(), row.end());
+            row_start[i + 1] = row_start[i] + row.size();
+            for (std::size_t j = 0; j < row.size(); ++j)
+            {
+              column_index[row_start[i] + j] = row[j].first;
+              position[row[j].second]        = row_start[i] + j;
+            }
+          }
+        }
+
+        // False if the factorisation is singular or its reciprocal
+        // condition estimate is below 1e-14 (then the ordering is redone).
+        bool
+        numeric_factorization()
+        {
+          double     info[UMFPACK_INFO];
+          const int  status = umfpack_dl_numeric(row_start.data(),
+                                                column_index.data(),
+                                                values.data(),
+                                                symbolic,
+                                                &numeric,
+                                                nullptr,
+                                                info);
+          const bool good = status == UMFPACK_OK && info[UMFPACK_RCOND] > 1e-14;
+          if (!good && numeric != nullptr)
+            umfpack_dl_free_numeric(&numeric);
+          return good;
+        }
+
+        void
+        clear()
+        {
+          if (numeric != nullptr)
+            umfpack_dl_free_numeric(&numeric);
+          if (symbolic != nullptr)
+            umfpack_dl_free_symbolic(&symbolic);
+        }
+
+        void                         *symbolic = nullptr;
+        void                         *numeric  = nullptr;
+        std::vector<SuiteSparse_long> row_start, column_index;
+        std::vector<double>           values;
+        // Storage position of the k-th entry of the deal.II matrix.
+        std::vector<std::size_t> position;
+      };
+    } // namespace
+
+
     struct LinearSolver::Implementation
     {
       // Factorises `matrix` with the chosen package; back_substitute() then
@@ -47,7 +207,7 @@ namespace deepdraw
       back_substitute(const Vector<double> &rhs, Vector<double> &solution);
 
       std::string                           type;
-      SparseDirectUMFPACK                   umfpack;
+      UmfpackFactorization                  umfpack;
       TrilinosWrappers::SparseMatrix        trilinos_matrix;
       std::unique_ptr<Epetra_Vector>        epetra_rhs, epetra_solution;
       std::unique_ptr<Epetra_LinearProblem> epetra_problem;
@@ -71,7 +231,7 @@ namespace deepdraw
       this->type = type;
       if (type == "UMFPACK")
       {
-        umfpack.initialize(matrix);
+        umfpack.factorize(matrix);
         return;
       }
       // Amesos directly rather than through TrilinosWrappers::SolverDirect:
@@ -111,7 +271,7 @@ namespace deepdraw
       solution.reinit(rhs.size());
       if (type == "UMFPACK")
       {
-        umfpack.vmult(solution, rhs);
+        umfpack.solve(rhs, solution);
         return;
       }
       for (unsigned int i = 0; i < rhs.size(); ++i)
