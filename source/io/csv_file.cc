@@ -8,6 +8,21 @@ namespace deepdraw
 {
   namespace io
   {
+    namespace
+    {
+      template <typename T>
+      std::string
+      format_row(const std::vector<T> &values)
+      {
+        std::ostringstream row;
+        row << std::setprecision(10);
+        for (std::size_t c = 0; c < values.size(); ++c)
+          row << (c ? "," : "") << values[c];
+        return row.str();
+      }
+    } // namespace
+
+
     CsvFile::CsvFile(const std::string              &filename,
                      const std::vector<std::string> &columns)
     {
@@ -24,9 +39,7 @@ namespace deepdraw
       file.open(filename);
       if (!file)
         throw std::runtime_error("cannot write " + filename);
-      for (std::size_t c = 0; c < columns.size(); ++c)
-        file << (c ? "," : "") << columns[c];
-      file << std::endl;
+      file << format_row(columns) << std::endl;
     }
 
 
@@ -35,11 +48,7 @@ namespace deepdraw
     {
       if (values.size() != n_columns)
         throw std::logic_error("wrong number of values for " + filename);
-      std::ostringstream row;
-      row << std::setprecision(10);
-      for (std::size_t c = 0; c < values.size(); ++c)
-        row << (c ? "," : "") << values[c];
-      file << row.str() << std::endl;
+      file << format_row(values) << std::endl;
     }
 
 
@@ -57,6 +66,22 @@ namespace deepdraw
       if (std::rename(temporary.c_str(), filename.c_str()) != 0)
         throw std::runtime_error("cannot rename " + temporary + " to "
                                  + filename);
+    }
+
+
+    void
+    write_csv_file_atomically(const std::string                      &filename,
+                              const std::vector<std::string>         &columns,
+                              const std::vector<std::vector<double>> &rows)
+    {
+      std::string content = format_row(columns) + "\n";
+      for (const std::vector<double> &row : rows)
+      {
+        if (row.size() != columns.size())
+          throw std::logic_error("wrong number of values for " + filename);
+        content += format_row(row) + "\n";
+      }
+      write_file_atomically(filename, content);
     }
   } // namespace io
 } // namespace deepdraw

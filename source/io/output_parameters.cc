@@ -1,3 +1,4 @@
+#include <deal.II/base/utilities.h>
 #include <deepdraw/io/output_parameters.h>
 
 namespace deepdraw
@@ -25,6 +26,15 @@ namespace deepdraw
                         Patterns::Bool(),
                         "Write the VTU/PVD files for ParaView (the CSV "
                         "tables are always written).");
+      prm.declare_entry("Thickness profile travels",
+                        "15, 20",
+                        Patterns::List(Patterns::Double(0.)),
+                        "Punch travels (values of t, mm) at which the "
+                        "thickness strain along OX and OD is written "
+                        "(thickness_OX_<travel>mm.csv, "
+                        "thickness_OD_<travel>mm.csv; runs with tools "
+                        "only); increments land on them, travels beyond "
+                        "Process/Punch travel are ignored.");
       prm.leave_subsection();
     }
 
@@ -36,6 +46,11 @@ namespace deepdraw
       output_directory = prm.get("Output directory");
       output_interval  = prm.get_double("Output interval");
       write_vtu        = prm.get_bool("Write VTU");
+      thickness_profile_travels.clear();
+      for (const std::string &travel :
+           Utilities::split_string_list(prm.get("Thickness profile travels")))
+        thickness_profile_travels.push_back(
+          Utilities::string_to_double(travel));
       prm.leave_subsection();
     }
   } // namespace io

@@ -131,7 +131,7 @@ namespace deepdraw
                           "'displacement': the tool follows Translation; "
                           "'force': its position along Force direction is "
                           "an unknown such that the contact forces on it "
-                          "add up to Force.");
+                          "add up to Process/Blank holder force.");
         prm.declare_entry("Translation",
                           "0; 0; 0",
                           Patterns::Anything(),
@@ -143,11 +143,6 @@ namespace deepdraw
                           Patterns::Anything(),
                           "Force control: axis along which the tool moves "
                           "and presses on the sheet.");
-        prm.declare_entry("Force",
-                          "0",
-                          Patterns::Anything(),
-                          "Force control: force of the tool on the sheet "
-                          "along Force direction, an expression of t (N).");
         prm.leave_subsection();
       }
       prm.leave_subsection();
@@ -156,8 +151,15 @@ namespace deepdraw
 
     void
     ContactCoupling::parse_parameters(ParameterHandler  &prm,
-                                      const std::string &prm_directory)
+                                      const std::string &prm_directory,
+                                      const std::string &blank_holder_force)
     {
+      // Checked even without a force-controlled tool: a bad expression is
+      // an input error wherever it is.
+      const std::shared_ptr<FunctionParser<1>> holder_force
+        = parse_function_of_load(blank_holder_force,
+                                 1,
+                                 "Process/Blank holder force");
       prm.enter_subsection("Contact");
       parameters.parse_parameters(prm);
       search_distance = prm.get_double("Search distance");
@@ -193,8 +195,7 @@ namespace deepdraw
                                                     prefix + "Translation");
           tool.axis             = parse_direction(prm.get("Force direction"),
                                       prefix + "Force direction");
-          tool.force
-            = parse_function_of_load(prm.get("Force"), 1, prefix + "Force");
+          tool.force            = holder_force;
           definitions.push_back(tool);
         }
         prm.leave_subsection();
@@ -338,7 +339,8 @@ namespace deepdraw
                               const AffineConstraints<double> &constraints,
                               SparseMatrix<double>            *matrix,
                               Vector<double>                  &rhs,
-                              const double                     new_load)
+                              const double                     new_load,
+                              const bool                       predictor)
     {
       Timer timer;
       // Force-controlled tools sit at their current unknown position.
@@ -368,7 +370,11 @@ namespace deepdraw
         geometry::ProjectionResult projection;
         pair.found = tool.project(x, projection, search_distance)
                      && !projection.on_free_edge;
-        if (pair.found)
+        // In the predictor the tool has moved but the sheet not yet: the
+        // gaps of open pairs say nothing about the new state; closing them
+        // flattened the sheet against the punch and Newton then had to open
+        // them again one ring at a time.
+        if (pair.found && !(predictor && pair.open_at_start))
         {
           contact::ClosestPointData closest;
           closest.foot_point = projection.foot;
@@ -506,6 +512,9 @@ namespace deepdraw
       for (unsigned int k = 0; k < definitions.size(); ++k)
         if (definitions[k].force_controlled)
           position_at_start[k] = solution[position_dof[k]];
+      for (Pair &pair : pairs)
+        pair.open_at_start
+          = !pair.found || pair.result.state == contact::ContactState::open;
     }
 
 

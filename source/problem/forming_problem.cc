@@ -1,5 +1,6 @@
 // Parameters, set-up and the increment loop of FormingProblem; the assembly
 // is in forming_problem_assembly.cc, the output in forming_problem_output.cc.
+#include <algorithm>
 #include <cmath>
 #include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -21,6 +22,7 @@ namespace deepdraw
     FormingProblem::declare_parameters(ParameterHandler &prm)
     {
       BlankGeometry::declare_parameters(prm);
+      ProcessParameters::declare_parameters(prm);
       prm.enter_subsection("Material");
       material::MaterialParameters::declare_parameters(prm);
       prm.leave_subsection();
@@ -52,6 +54,7 @@ namespace deepdraw
         , scalar_dof_handler(triangulation)
     {
       geometry.parse_parameters(prm);
+      process_parameters.parse_parameters(prm);
       prm.enter_subsection("Material");
       material_parameters.parse_parameters(prm);
       prm.leave_subsection();
@@ -63,11 +66,24 @@ namespace deepdraw
                                   geometry.symmetry_plane_x,
                                   geometry.symmetry_plane_y);
       increment_parameters.parse_parameters(prm);
+      increment_parameters.final_load = process_parameters.punch_travel;
       newton_parameters.parse_parameters(prm);
       linear_solver_parameters.parse_parameters(prm);
       output_parameters.parse_parameters(prm);
       square_cup_tool_parameters.parse_parameters(prm);
-      contact.parse_parameters(prm, input_directory);
+      contact.parse_parameters(prm,
+                               input_directory,
+                               process_parameters.blank_holder_force);
+
+      // Thickness profiles are square-cup tables: runs with tools only.
+      if (contact.active())
+        for (const double travel : output_parameters.thickness_profile_travels)
+          if (travel <= process_parameters.punch_travel * (1. + 1e-12))
+            profile_travels.push_back(travel);
+      std::sort(profile_travels.begin(), profile_travels.end());
+      profile_travels.erase(std::unique(profile_travels.begin(),
+                                        profile_travels.end()),
+                            profile_travels.end());
 
       material
         = std::make_unique<material::HillPlasticity>(material_parameters);
@@ -82,6 +98,15 @@ namespace deepdraw
     {
       geometry.create_mesh(triangulation, vertex_column, vertex_layer);
       initial_vertices = triangulation.get_vertices();
+      column_end_vertices.resize((geometry.elements_along_x + 1)
+                                 * (geometry.elements_along_y + 1));
+      for (unsigned int v = 0; v < initial_vertices.size(); ++v)
+      {
+        if (vertex_layer[v] == 0)
+          column_end_vertices[vertex_column[v]][0] = v;
+        if (vertex_layer[v] == geometry.layers_through_thickness)
+          column_end_vertices[vertex_column[v]][1] = v;
+      }
       dof_handler.distribute_dofs(fe);
       scalar_dof_handler.distribute_dofs(fe_scalar);
 
@@ -339,9 +364,18 @@ namespace deepdraw
             = block_norm(free_residual, n_u) / reference;
           const double contact_residual
             = contact.residual_norm(system_rhs) / reference;
-          const double increment_norm = block_norm(displacement_increment, n_u);
+          // The correction is measured against the displacement so far,
+          // not the increment alone: on tiny increments (cut-backs) a
+          // 1e-6 mm correction of a slipping flange is not a lack of
+          // convergence.
+          Vector<double> displacement = total_displacement;
+          for (types::global_dof_index i = 0; i < n_u; ++i)
+            displacement[i] += displacement_increment[i];
+          const double displacement_norm
+            = std::max(block_norm(displacement_increment, n_u),
+                       block_norm(displacement, n_u));
           const double relative_correction
-            = increment_norm > 0. ? correction_norm / increment_norm : 0.;
+            = displacement_norm > 0. ? correction_norm / displacement_norm : 0.;
           residual_history.push_back(force_residual);
           contact_residual_history.push_back(contact_residual);
           newton_file.add_row({double(increment_number + 1),
@@ -494,8 +528,9 @@ namespace deepdraw
                     << " sheet nodes start inside a tool; the first "
                        "increment pushes them out"
                     << std::endl;
-        // Tool placement and contact fields of the initial state.
+        // Tool placement, contact fields and states of the initial state.
         assemble(displacement_increment, homogeneous_constraints, false);
+        contact.commit(displacement_increment);
       }
       write_vtu(0.);
 
@@ -505,6 +540,19 @@ namespace deepdraw
              load < increment_parameters.final_load;
              load += output_parameters.output_interval)
           landing_loads.push_back(load);
+      // The thickness profiles are computed at their travels, not
+      // interpolated (D6); the end is landed on anyway.
+      for (const double travel : profile_travels)
+        if (travel > 0. && travel < increment_parameters.final_load)
+          landing_loads.push_back(travel);
+      std::sort(landing_loads.begin(), landing_loads.end());
+      landing_loads.erase(std::unique(landing_loads.begin(),
+                                      landing_loads.end(),
+                                      [](const double a, const double b) {
+                                        return std::abs(a - b)
+                                               < 1e-9 * std::max(1., b);
+                                      }),
+                          landing_loads.end());
       solver::IncrementControl control(increment_parameters, landing_loads);
 
       Timer run_timer;

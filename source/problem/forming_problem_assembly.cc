@@ -244,7 +244,8 @@ namespace deepdraw
                               constraints,
                               assemble_matrix ? &system_matrix : nullptr,
                               system_rhs,
-                              target_load);
+                              target_load,
+                              &constraints == &predictor_constraints);
 
       if (worst_status == 1)
         return IncrementOutcome::inverted_element;

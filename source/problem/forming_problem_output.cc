@@ -1,10 +1,12 @@
 // Results of FormingProblem: geometric thickness, VTU/PVD, CSV tables.
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <deal.II/numerics/data_out.h>
 #include <deepdraw/fe/selective_reduced_quadrature.h>
 #include <deepdraw/geometry/tool_vtu.h>
 #include <deepdraw/problem/forming_problem.h>
+#include <deepdraw/problem/thickness_profiles.h>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -24,15 +26,7 @@ namespace deepdraw
       const unsigned int n_columns
         = (geometry.elements_along_x + 1) * (geometry.elements_along_y + 1);
       std::vector<Tensor<1, 3>> normal(n_columns);
-      std::vector<Point<3>>     top(n_columns), bottom(n_columns);
       const auto               &vertices = triangulation.get_vertices();
-      for (unsigned int v = 0; v < vertices.size(); ++v)
-      {
-        if (vertex_layer[v] == 0)
-          bottom[vertex_column[v]] = vertices[v];
-        if (vertex_layer[v] == geometry.layers_through_thickness)
-          top[vertex_column[v]] = vertices[v];
-      }
       for (const auto &cell : triangulation.active_cell_iterators())
         for (const auto &face : cell->face_iterators())
           if (face->at_boundary()
@@ -50,8 +44,10 @@ namespace deepdraw
           }
       column_thickness.resize(n_columns);
       for (unsigned int c = 0; c < n_columns; ++c)
-        column_thickness[c]
-          = std::abs((top[c] - bottom[c]) * normal[c]) / normal[c].norm();
+        column_thickness[c] = std::abs((vertices[column_end_vertices[c][1]]
+                                        - vertices[column_end_vertices[c][0]])
+                                       * normal[c])
+                              / normal[c].norm();
     }
 
 
@@ -112,6 +108,52 @@ namespace deepdraw
           for (const char *suffix : {"_Fx", "_Fy", "_Fz", "_ux", "_uy", "_uz"})
             tool_columns.push_back(tool.name + suffix);
         tools_file.open(directory + "/tools.csv", tool_columns);
+
+        // Square-cup tables (DESIGN §2): the punch is the tool named
+        // "punch", the blank holder the first force-controlled tool.
+        const std::vector<ToolDefinition> &tools = contact.tool_definitions();
+        for (unsigned int k = 0; k < tools.size(); ++k)
+        {
+          std::string name = tools[k].name;
+          std::transform(name.begin(),
+                         name.end(),
+                         name.begin(),
+                         [](const unsigned char c) { return std::tolower(c); });
+          if (punch_tool == numbers::invalid_unsigned_int && name == "punch")
+            punch_tool = k;
+          if (holder_tool == numbers::invalid_unsigned_int
+              && tools[k].force_controlled)
+            holder_tool = k;
+        }
+        if (punch_tool != numbers::invalid_unsigned_int)
+        {
+          // Direction of the punch motion over the whole run; a punch
+          // that does not move is taken to push along -z.
+          const ToolDefinition &punch = tools[punch_tool];
+          if (punch.force_controlled)
+            punch_direction = punch.axis;
+          else
+          {
+            Vector<double> start(3), end(3);
+            punch.translation->set_time(0.);
+            punch.translation->vector_value(Point<1>(), start);
+            punch.translation->set_time(process_parameters.punch_travel);
+            punch.translation->vector_value(Point<1>(), end);
+            for (unsigned int d = 0; d < 3; ++d)
+              punch_direction[d] = end[d] - start[d];
+          }
+          if (punch_direction.norm() > 0.)
+            punch_direction /= punch_direction.norm();
+          else
+            punch_direction = Tensor<1, 3>({0., 0., -1.});
+          punch_force_file.open(directory + "/punch_force.csv",
+                                {"punch_travel_mm",
+                                 "punch_force_N",
+                                 "holder_force_N",
+                                 "holder_z_mm"});
+        }
+        draw_in_file.open(directory + "/draw_in.csv",
+                          {"punch_travel_mm", "DX_mm", "DY_mm", "DD_mm"});
       }
       write_increment_tables(0.);
     }
@@ -141,6 +183,81 @@ namespace deepdraw
             tool_row.push_back(contact.tools()[k].translation()[c]);
         }
         tools_file.add_row(tool_row);
+        write_process_tables(load);
+        for (const double travel : profile_travels)
+          if (std::abs(travel - load) < 1e-9 * std::max(1., travel))
+            write_thickness_profiles(travel);
+      }
+    }
+
+
+    void
+    FormingProblem::write_process_tables(const double load)
+    {
+      // Forces of the tools on the sheet, positive when the punch pushes
+      // along its motion and the holder presses along its axis.
+      const std::vector<Tensor<1, 3>> forces       = contact.tool_forces();
+      double                          holder_force = 0., holder_z = 0.;
+      if (holder_tool != numbers::invalid_unsigned_int)
+      {
+        holder_force
+          = forces[holder_tool] * contact.tool_definitions()[holder_tool].axis;
+        holder_z = contact.tools()[holder_tool].translation()[2];
+      }
+      if (punch_tool != numbers::invalid_unsigned_int)
+        punch_force_file.add_row(
+          {load, forces[punch_tool] * punch_direction, holder_force, holder_z});
+
+      // Draw-in of the blank edge: mid-thickness points of the columns
+      // that start at (L, 0), (0, W) and (L, W), measured towards the cup
+      // axis x = y = 0.
+      const auto &vertices  = triangulation.get_vertices();
+      const auto  mid_point = [&](const unsigned int i, const unsigned int j)
+      {
+        const auto &ends
+          = column_end_vertices[i + j * (geometry.elements_along_x + 1)];
+        return Point<3>(0.5 * (vertices[ends[0]] + vertices[ends[1]]));
+      };
+      const unsigned int nx     = geometry.elements_along_x;
+      const unsigned int ny     = geometry.elements_along_y;
+      const Point<3>     corner = mid_point(nx, ny);
+      draw_in_file.add_row({load,
+                            geometry.length - mid_point(nx, 0)[0],
+                            geometry.width - mid_point(0, ny)[1],
+                            std::hypot(geometry.length, geometry.width)
+                              - std::hypot(corner[0], corner[1])});
+    }
+
+
+    void
+    FormingProblem::write_thickness_profiles(const double travel)
+    {
+      std::vector<double> strain(column_thickness.size());
+      for (unsigned int c = 0; c < strain.size(); ++c)
+        strain[c] = std::log(column_thickness[c] / geometry.thickness);
+      std::ostringstream label;
+      label << std::setprecision(10) << travel;
+      const std::pair<const char *, Profile> profiles[]
+        = {{"OX",
+            profile_along_x_axis(strain,
+                                 geometry.elements_along_x,
+                                 geometry.length)},
+           {"OD",
+            profile_along_diagonal(strain,
+                                   geometry.elements_along_x,
+                                   geometry.elements_along_y,
+                                   geometry.length,
+                                   geometry.width)}};
+      for (const auto &[name, profile] : profiles)
+      {
+        std::vector<std::vector<double>> rows;
+        for (const auto &[s0, value] : profile)
+          rows.push_back({s0, value});
+        io::write_csv_file_atomically(output_parameters.output_directory
+                                        + "/thickness_" + name + "_"
+                                        + label.str() + "mm.csv",
+                                      {"s0_mm", "thickness_strain"},
+                                      rows);
       }
     }
 

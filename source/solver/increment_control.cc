@@ -11,11 +11,6 @@ namespace deepdraw
     IncrementControlParameters::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Load stepping");
-      prm.declare_entry("Final load",
-                        "1",
-                        Patterns::Double(0.),
-                        "Value of the load parameter t at the end of the "
-                        "run (t starts at 0).");
       prm.declare_entry("Initial increment",
                         "0.1",
                         Patterns::Double(0.),
@@ -57,7 +52,6 @@ namespace deepdraw
     IncrementControlParameters::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Load stepping");
-      final_load        = prm.get_double("Final load");
       initial_increment = prm.get_double("Initial increment");
       minimum_increment = prm.get_double("Minimum increment");
       maximum_increment = prm.get_double("Maximum increment");

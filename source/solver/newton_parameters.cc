@@ -26,9 +26,10 @@ namespace deepdraw
                         "1e-6",
                         Patterns::Double(0.),
                         "The last Newton correction of the displacements, "
-                        "divided by the displacement increment, must be "
-                        "below this for convergence (from the second "
-                        "iteration after the predictor on).");
+                        "divided by the larger of the increment and the "
+                        "total displacement, must be below this for "
+                        "convergence (from the second iteration after the "
+                        "predictor on).");
       prm.declare_entry("Divergence ratio",
                         "1e4",
                         Patterns::Double(1.),

@@ -42,8 +42,10 @@ subsection Contact
     set Geometry = square cup blank holder
     set Sheet surface = top
     set Control = force
-    set Force = 4900
   end
+end
+subsection Process
+  set Blank holder force = 4900
 end
 subsection Output
   set Output directory = contact-tangent-test-output

@@ -62,8 +62,10 @@ subsection Boundary conditions
   set Prescribed displacements = zmax: uz = -1e-3*min(t, 1); zmax: ux = )"
          << drag << R"(*max(t - 1, 0)
 end
+subsection Process
+  set Punch travel = 2
+end
 subsection Load stepping
-  set Final load        = 2
   set Initial increment = 0.25
   set Maximum increment = 0.25
 end

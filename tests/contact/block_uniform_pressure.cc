@@ -58,8 +58,10 @@ end
 subsection Boundary conditions
   set Prescribed displacements = zmax: uz = -1e-4*t
 end
+subsection Process
+  set Punch travel = 1
+end
 subsection Load stepping
-  set Final load        = 1
   set Initial increment = 0.5
   set Maximum increment = 0.5
 end

@@ -12,8 +12,13 @@ increment:
     other support along z): 1e-8 relative;
   * the holder moves down and never leaves the plate (its translation is
     negative from the first increment on).
+Without a tool named punch there is no punch_force.csv; draw_in.csv has a
+row per tools.csv row; the default thickness-profile travels (15, 20 mm) lie
+beyond the punch travel: no thickness file.
 """
 import csv
+import glob
+import os
 import sys
 
 
@@ -39,4 +44,12 @@ def check(output, force, extra=None):
     if len(rows) < 5:
         print("FAIL: only %d increments" % len(rows))
         failures += 1
+    with open(output + "/draw_in.csv") as f:
+        draw_in = [row for row in csv.DictReader(f) if float(row["punch_travel_mm"]) > 0]
+    tables_ok = (not os.path.exists(output + "/punch_force.csv")
+                 and len(draw_in) == len(rows)
+                 and not glob.glob(output + "/thickness_*"))
+    failures += not tables_ok
+    print("%s no punch_force.csv, %d draw_in.csv rows, no thickness file"
+          % ("ok  " if tables_ok else "FAIL", len(draw_in)))
     return failures

@@ -56,7 +56,8 @@ namespace
              "  set Prescribed displacements = "
            + conditions
            + "\nend\n"
-             "subsection Load stepping\n  set Final load = 1\n"
+             "subsection Process\n  set Punch travel = 1\nend\n"
+             "subsection Load stepping\n"
              "  set Initial increment = "
            + std::to_string(increment)
            + "\n  set Maximum increment = " + std::to_string(increment)

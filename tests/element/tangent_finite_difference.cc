@@ -28,10 +28,11 @@ namespace
              "subsection Boundary conditions\n"
              "  set Prescribed displacements = zmin: uz = 0; ymin: uy = 0; "
              "xmax: ux = 0.05*t; xmax: uz = 0.2*t*(x-1)\nend\n"
-             "subsection Load stepping\n  set Final load = "
+             "subsection Process\n  set Punch travel = "
            + std::to_string(final_load)
-           + "\n  set Initial increment = 0.25\n  set Maximum increment = "
-             "0.25\nend\n"
+           + "\nend\n"
+             "subsection Load stepping\n  set Initial increment = 0.25\n"
+             "  set Maximum increment = 0.25\nend\n"
              "subsection Output\n  set Output directory = tangent-test-output\n"
              "  set Write VTU = false\nend\n";
   }

@@ -81,9 +81,10 @@ namespace
              "subsection Boundary conditions\n"
              "  set Prescribed displacements = ymin: uy = 0; ymax: uy = 0; "
              "xmin: ux = 0; xmin: uz = 0; xmax: ux = 0.06*t*(z - 0.5)\nend\n"
-             "subsection Load stepping\n  set Final load = "
+             "subsection Process\n  set Punch travel = "
            + std::to_string(final_load)
-           + "\n  set Initial increment = 0.05\n"
+           + "\nend\n"
+             "subsection Load stepping\n  set Initial increment = 0.05\n"
              "  set Maximum increment = 0.05\nend\n"
              "subsection Output\n  set Output directory = locking-test-output\n"
              "  set Write VTU = false\nend\n";

@@ -36,6 +36,13 @@ namespace deepdraw
     void
     write_file_atomically(const std::string &filename,
                           const std::string &content);
+
+    // A whole table (the format of CsvFile) written at once, atomically:
+    // for results that are complete only when all rows are known.
+    void
+    write_csv_file_atomically(const std::string                      &filename,
+                              const std::vector<std::string>         &columns,
+                              const std::vector<std::vector<double>> &rows);
   } // namespace io
 } // namespace deepdraw
 

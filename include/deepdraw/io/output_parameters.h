@@ -4,6 +4,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <string>
+#include <vector>
 
 namespace deepdraw
 {
@@ -16,6 +17,8 @@ namespace deepdraw
       std::string output_directory = "output";
       double      output_interval  = 0.;
       bool        write_vtu        = true;
+      // Punch travels (mm) at which the thickness profiles are written.
+      std::vector<double> thickness_profile_travels = {15., 20.};
 
       static void
       declare_parameters(ParameterHandler &prm);

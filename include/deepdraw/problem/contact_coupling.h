@@ -47,7 +47,8 @@ namespace deepdraw
       bool         force_controlled = false;
       // Displacement control: translation (3 expressions of t, mm).
       std::shared_ptr<FunctionParser<1>> translation;
-      // Force control: axis a (unit) and force F(t) in N along a.
+      // Force control: axis a (unit) and force F(t) in N along a
+      // (Process/Blank holder force, shared by all force-controlled tools).
       Tensor<1, 3>                       axis;
       std::shared_ptr<FunctionParser<1>> force;
     };
@@ -58,9 +59,13 @@ namespace deepdraw
       static void
       declare_parameters(ParameterHandler &prm);
       // Reads subsection Contact; tool files are relative to
-      // prm_directory. Throws InputError naming the parameter or file.
+      // prm_directory. Every force-controlled tool presses with
+      // blank_holder_force (Process/Blank holder force, an expression of
+      // t). Throws InputError naming the parameter or file.
       void
-      parse_parameters(ParameterHandler &prm, const std::string &prm_directory);
+      parse_parameters(ParameterHandler  &prm,
+                       const std::string &prm_directory,
+                       const std::string &blank_holder_force);
 
       bool
       active() const;
@@ -104,19 +109,23 @@ namespace deepdraw
       // rhs and dr/dx to the matrix (if matrix != nullptr) through the
       // constraints; adds the contact forces P to contact_force (by u dof).
       // Returns the number of pairs whose state changed since the last call.
+      // With predictor = true (the tangent predictor of the increment) the
+      // pairs that were open at the last converged state stay open: the
+      // predictor linearises at that state (reference Eq. 13).
       unsigned int
       assemble(const std::vector<Point<3>>     &positions,
                const Vector<double>            &solution,
                const AffineConstraints<double> &constraints,
                SparseMatrix<double>            *matrix,
                Vector<double>                  &rhs,
-               double                           new_load);
+               double                           new_load,
+               bool                             predictor = false);
 
       // sqrt(sum |r F_sup|^2 + sum (holder residual)^2): a force (N).
       double
       residual_norm(const Vector<double> &rhs) const;
 
-      // Remembers the converged tool positions.
+      // Remembers the converged tool positions and contact states.
       void
       commit(const Vector<double> &solution);
 
@@ -164,6 +173,8 @@ namespace deepdraw
         double                                 augmentation;
         contact::ContactPairResult             result;
         bool                                   found = false;
+        // Open at the last converged state (see assemble(), predictor).
+        bool open_at_start = false;
       };
 
       contact::ContactParameters       parameters;

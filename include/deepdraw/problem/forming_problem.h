@@ -27,6 +27,7 @@
 #include <deepdraw/problem/blank_geometry.h>
 #include <deepdraw/problem/contact_coupling.h>
 #include <deepdraw/problem/prescribed_displacements.h>
+#include <deepdraw/problem/process_parameters.h>
 #include <deepdraw/problem/quadrature_point_update.h>
 #include <deepdraw/solver/increment_control.h>
 #include <deepdraw/solver/linear_solver.h>
@@ -183,9 +184,16 @@ namespace deepdraw
       write_vtu(double load);
       void
       write_increment_tables(double load);
+      // punch_force.csv and draw_in.csv rows (runs with tools).
+      void
+      write_process_tables(double load);
+      // thickness_OX/OD_<travel>mm.csv at a requested travel.
+      void
+      write_thickness_profiles(double travel);
 
       // Parameters
       BlankGeometry                      geometry;
+      ProcessParameters                  process_parameters;
       material::MaterialParameters       material_parameters;
       PrescribedDisplacements            prescribed;
       solver::IncrementControlParameters increment_parameters;
@@ -216,6 +224,8 @@ namespace deepdraw
       std::vector<unsigned int>                           dof_component;
       std::vector<CellGeometry>                           cell_geometry;
       std::array<std::vector<types::global_dof_index>, 6> face_dofs;
+      // Bottom and top vertex of every through-thickness column.
+      std::vector<std::array<unsigned int, 2>> column_end_vertices;
 
       // Constrained dofs with their prescribed displacement entry.
       std::vector<
@@ -264,6 +274,17 @@ namespace deepdraw
       std::vector<unsigned int>      reaction_faces;
       unsigned int                   output_step      = 0;
       unsigned int                   increment_number = 0;
+
+      // Square-cup tables (DESIGN §2): the tool named "punch" and the
+      // unit direction of its motion, the first force-controlled tool
+      // (invalid_unsigned_int: none), the travels of the thickness
+      // profiles within the run.
+      io::CsvFile         punch_force_file;
+      io::CsvFile         draw_in_file;
+      unsigned int        punch_tool  = numbers::invalid_unsigned_int;
+      unsigned int        holder_tool = numbers::invalid_unsigned_int;
+      Tensor<1, 3>        punch_direction;
+      std::vector<double> profile_travels;
     };
   } // namespace problem
 } // namespace deepdraw

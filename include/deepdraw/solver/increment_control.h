@@ -15,6 +15,8 @@ namespace deepdraw
 
     struct IncrementControlParameters
     {
+      // End of the run; not read from subsection Load stepping but set by
+      // the owner (Process/Punch travel).
       double       final_load        = 1.;
       double       initial_increment = 0.1;
       double       minimum_increment = 1e-6;

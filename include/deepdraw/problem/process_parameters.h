@@ -1,0 +1,31 @@
+// The forming process (subsection Process, DESIGN §6): how far the punch
+// travels and how hard the blank holder presses.
+#ifndef deepdraw_problem_process_parameters_h
+#define deepdraw_problem_process_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <string>
+
+namespace deepdraw
+{
+  namespace problem
+  {
+    using namespace dealii;
+
+    struct ProcessParameters
+    {
+      // End value of the load parameter t (mm of punch travel).
+      double punch_travel = 1.;
+      // Force of every force-controlled tool as an expression of t (N);
+      // ContactCoupling parses and checks it.
+      std::string blank_holder_force = "0";
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+  } // namespace problem
+} // namespace deepdraw
+
+#endif

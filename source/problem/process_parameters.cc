@@ -1,0 +1,40 @@
+#include <deepdraw/problem/process_parameters.h>
+
+namespace deepdraw
+{
+  namespace problem
+  {
+    void
+    ProcessParameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Process");
+      prm.declare_entry("Punch travel",
+                        "1",
+                        Patterns::Double(0.),
+                        "End of the run: final value of the load parameter "
+                        "t, which starts at 0 (mm). In the square cup t is "
+                        "the punch travel (punch Translation = 0; 0; -t); "
+                        "in cases without a punch it is the end value of "
+                        "the t used in their prescribed displacements and "
+                        "tool translations.");
+      prm.declare_entry("Blank holder force",
+                        "0",
+                        Patterns::Anything(),
+                        "Force of every tool with Control = force on the "
+                        "sheet along its Force direction, an expression of "
+                        "the load t (N). For the quarter model of the "
+                        "square cup it is the force on the quarter.");
+      prm.leave_subsection();
+    }
+
+
+    void
+    ProcessParameters::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Process");
+      punch_travel       = prm.get_double("Punch travel");
+      blank_holder_force = prm.get("Blank holder force");
+      prm.leave_subsection();
+    }
+  } // namespace problem
+} // namespace deepdraw
