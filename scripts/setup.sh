@@ -4,7 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages=(libdeal.ii-dev cmake g++ make numdiff ccache python3 gnuplot-nox)
+packages=(libdeal.ii-dev libopenblas0-serial cmake g++ make numdiff ccache python3 gnuplot-nox)
 missing=()
 for package in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" \

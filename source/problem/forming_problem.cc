@@ -434,23 +434,34 @@ namespace deepdraw
         // many contact nodes can cycle between states; damping the step
         // until the out-of-balance force decreases breaks the cycle and
         // leaves full steps (quadratic convergence) near the solution.
-        const double         merit_now = merit();
-        const Vector<double> start     = displacement_increment;
-        double               step      = 1.;
-        for (unsigned int trial = 0;; ++trial)
+        // A step that inverts an element or breaks a return mapping is too
+        // long whatever the merit says: it is halved up to
+        // failed_point_halvings more times before the increment is cut.
+        const unsigned int   failed_point_halvings = 5;
+        const double         merit_now             = merit();
+        const Vector<double> start                 = displacement_increment;
+        double               step                  = 1.;
+        for (unsigned int trial = 0, merit_trial = 0;; ++trial)
         {
           displacement_increment = start;
           displacement_increment.add(step, correction);
           const IncrementOutcome status
             = assemble(displacement_increment, homogeneous_constraints, true);
-          const bool acceptable = status == IncrementOutcome::converged
-                                  && merit() <= (1. - 1e-4 * step) * merit_now;
-          if (acceptable || trial >= newton_parameters.line_search_steps)
+          if (status == IncrementOutcome::inverted_element
+              || status == IncrementOutcome::return_mapping_failed)
           {
-            if (status != IncrementOutcome::converged)
+            if (trial
+                >= newton_parameters.line_search_steps + failed_point_halvings)
               return status;
-            break;
+            step *= 0.5;
+            continue;
           }
+          if (status != IncrementOutcome::converged)
+            return status;
+          if (merit() <= (1. - 1e-4 * step) * merit_now
+              || merit_trial >= newton_parameters.line_search_steps)
+            break;
+          ++merit_trial;
           step *= 0.5;
         }
         correction_norm *= step;
@@ -634,7 +645,8 @@ namespace deepdraw
                                  search_time,
                                  solve_time,
                                  output_time,
-                                 increment_timer.wall_time()});
+                                 increment_timer.wall_time(),
+                                 sheet_volume()});
 
         std::ostringstream line;
         line << "increment " << std::setw(4) << increment_number << "  load "

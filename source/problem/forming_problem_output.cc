@@ -51,6 +51,19 @@ namespace deepdraw
     }
 
 
+    double
+    FormingProblem::sheet_volume() const
+    {
+      // Σ JxW over the Gauss points of the current configuration: exact for
+      // the trilinear geometry (volume conservation check, DESIGN §5).
+      double volume = 0.;
+      for (const CellGeometry &cell : cell_geometry)
+        for (const double w : cell.JxW)
+          volume += w;
+      return volume;
+    }
+
+
     std::vector<Tensor<2, 3>>
     FormingProblem::cell_average_cauchy_stress() const
     {
@@ -86,7 +99,8 @@ namespace deepdraw
                             "contact_search_s",
                             "linear_solve_s",
                             "output_s",
-                            "wall_s"});
+                            "wall_s",
+                            "sheet_volume_mm3"});
       newton_file.open(directory + "/newton.csv",
                        {"increment",
                         "load",

@@ -116,6 +116,9 @@ namespace deepdraw
       // Quadrature points that yielded in the last assembly.
       unsigned int
       last_plastic_points() const;
+      // Volume of the sheet in the current configuration (mm³).
+      double
+      sheet_volume() const;
       // Current thickness of each through-thickness column.
       const std::vector<double> &
       get_column_thickness() const;
