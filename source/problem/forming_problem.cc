@@ -259,6 +259,8 @@ namespace deepdraw
           return "too many Newton iterations";
         case IncrementOutcome::diverged:
           return "growing residual";
+        case IncrementOutcome::stagnated:
+          return "residual still above Newton/Stagnation residual";
         case IncrementOutcome::not_a_number:
           return "residual is not a number";
         case IncrementOutcome::inverted_element:
@@ -404,6 +406,10 @@ namespace deepdraw
             return IncrementOutcome::diverged;
           if (iterations >= newton_parameters.maximum_iterations)
             return IncrementOutcome::too_many_iterations;
+          if (newton_parameters.stagnation_iterations > 0
+              && iterations >= newton_parameters.stagnation_iterations
+              && residual > newton_parameters.stagnation_residual)
+            return IncrementOutcome::stagnated;
         }
 
         Timer timer;
@@ -424,7 +430,43 @@ namespace deepdraw
         correction_norm = block_norm(correction, n_u);
         if (!std::isfinite(correction.l2_norm()))
           return IncrementOutcome::not_a_number;
-        if (iterations == 0 || newton_parameters.line_search_steps == 0)
+        // A step that inverts an element or breaks a return mapping is too
+        // long whatever the merit says: it is halved up to
+        // failed_point_halvings times before the increment is cut.
+        const unsigned int failed_point_halvings = 5;
+        const auto         failed_point = [](const IncrementOutcome status)
+        {
+          return status == IncrementOutcome::inverted_element
+                 || status == IncrementOutcome::return_mapping_failed;
+        };
+        if (iterations == 0)
+        {
+          // The predictor extrapolates the last increment linearly; near
+          // tool radii that can fold an element. Its free part is then
+          // halved; prescribed displacements keep their full increment.
+          const Vector<double> start = displacement_increment;
+          double               step  = 1.;
+          for (unsigned int trial = 0;; ++trial)
+          {
+            displacement_increment = start;
+            for (types::global_dof_index i = 0; i < correction.size(); ++i)
+              displacement_increment[i]
+                += (constraints.is_constrained(i) ? 1. : step) * correction[i];
+            const IncrementOutcome status
+              = assemble(displacement_increment, homogeneous_constraints, true);
+            if (failed_point(status) && trial < failed_point_halvings)
+            {
+              step *= 0.5;
+              continue;
+            }
+            if (status != IncrementOutcome::converged)
+              return status;
+            break;
+          }
+          assembled = true;
+          continue;
+        }
+        if (newton_parameters.line_search_steps == 0)
         {
           displacement_increment += correction;
           continue;
@@ -434,21 +476,16 @@ namespace deepdraw
         // many contact nodes can cycle between states; damping the step
         // until the out-of-balance force decreases breaks the cycle and
         // leaves full steps (quadratic convergence) near the solution.
-        // A step that inverts an element or breaks a return mapping is too
-        // long whatever the merit says: it is halved up to
-        // failed_point_halvings more times before the increment is cut.
-        const unsigned int   failed_point_halvings = 5;
-        const double         merit_now             = merit();
-        const Vector<double> start                 = displacement_increment;
-        double               step                  = 1.;
+        const double         merit_now = merit();
+        const Vector<double> start     = displacement_increment;
+        double               step      = 1.;
         for (unsigned int trial = 0, merit_trial = 0;; ++trial)
         {
           displacement_increment = start;
           displacement_increment.add(step, correction);
           const IncrementOutcome status
             = assemble(displacement_increment, homogeneous_constraints, true);
-          if (status == IncrementOutcome::inverted_element
-              || status == IncrementOutcome::return_mapping_failed)
+          if (failed_point(status))
           {
             if (trial
                 >= newton_parameters.line_search_steps + failed_point_halvings)
@@ -567,14 +604,16 @@ namespace deepdraw
       solver::IncrementControl control(increment_parameters, landing_loads);
 
       Timer run_timer;
+      // The times of an increment include its failed attempts (cut-backs):
+      // they are reset only once it has converged.
+      assembly_time             = 0.;
+      solve_time                = 0.;
+      double search_time_before = contact.search_time();
+      Timer  increment_timer;
       while (!control.finished())
       {
-        const double old_load = control.current_load();
-        const double new_load = old_load + control.next_increment();
-        assembly_time         = 0.;
-        solve_time            = 0.;
-        const double           search_time_before = contact.search_time();
-        Timer                  increment_timer;
+        const double           old_load   = control.current_load();
+        const double           new_load   = old_load + control.next_increment();
         unsigned int           iterations = 0;
         const IncrementOutcome outcome
           = solve_increment(old_load, new_load, iterations);
@@ -661,6 +700,10 @@ namespace deepdraw
         line << std::fixed << std::setprecision(3) << "  time "
              << increment_timer.wall_time() << " s";
         std::cout << line.str() << std::endl;
+        assembly_time      = 0.;
+        solve_time         = 0.;
+        search_time_before = contact.search_time();
+        increment_timer.restart();
       }
       std::cout << "deepdraw: finished at load "
                 << format_load(control.current_load()) << " after "

@@ -24,7 +24,7 @@ namespace deepdraw
                         "UMFPACK",
                         Patterns::Selection("UMFPACK|MUMPS|KLU"),
                         "Direct solver of the Newton system: UMFPACK "
-                        "(SuiteSparse, through deal.II), MUMPS or KLU "
+                        "(SuiteSparse, called directly), MUMPS or KLU "
                         "(through Trilinos Amesos).");
       prm.leave_subsection();
     }

@@ -42,6 +42,19 @@ namespace deepdraw
                         "Halvings of a Newton step allowed when it does not "
                         "reduce the out-of-balance forces (0 switches the "
                         "line search off).");
+      prm.declare_entry("Stagnation iterations",
+                        "8",
+                        Patterns::Integer(0),
+                        "An increment whose relative residual is still above "
+                        "Stagnation residual after this many iterations is "
+                        "cut back without using up Maximum iterations "
+                        "(0: never). In the square cup, such increments "
+                        "never converged but cost half the run time.");
+      prm.declare_entry("Stagnation residual",
+                        "0.1",
+                        Patterns::Double(0.),
+                        "See Stagnation iterations (relative residual, as "
+                        "Force tolerance).");
       prm.leave_subsection();
     }
 
@@ -50,11 +63,13 @@ namespace deepdraw
     NewtonParameters::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Newton");
-      maximum_iterations   = prm.get_integer("Maximum iterations");
-      force_tolerance      = prm.get_double("Force tolerance");
-      correction_tolerance = prm.get_double("Correction tolerance");
-      divergence_ratio     = prm.get_double("Divergence ratio");
-      line_search_steps    = prm.get_integer("Line search steps");
+      maximum_iterations    = prm.get_integer("Maximum iterations");
+      force_tolerance       = prm.get_double("Force tolerance");
+      correction_tolerance  = prm.get_double("Correction tolerance");
+      divergence_ratio      = prm.get_double("Divergence ratio");
+      line_search_steps     = prm.get_integer("Line search steps");
+      stagnation_iterations = prm.get_integer("Stagnation iterations");
+      stagnation_residual   = prm.get_double("Stagnation residual");
       prm.leave_subsection();
     }
   } // namespace solver

@@ -153,6 +153,7 @@ namespace deepdraw
         converged,
         too_many_iterations,
         diverged,
+        stagnated,
         not_a_number,
         inverted_element,
         return_mapping_failed,

@@ -20,6 +20,11 @@ namespace deepdraw
       double divergence_ratio = 1e4;
       // Halvings of the Newton step allowed by the line search (0: none).
       unsigned int line_search_steps = 4;
+      // An increment whose relative residual is still above
+      // stagnation_residual after stagnation_iterations iterations is cut
+      // back at once (0: never).
+      unsigned int stagnation_iterations = 8;
+      double       stagnation_residual   = 0.1;
 
       static void
       declare_parameters(ParameterHandler &prm);
