@@ -240,6 +240,9 @@ namespace deepdraw
       // The old solver refers to the old problem and matrix: release it
       // first.
       amesos.reset();
+      // A fresh copy: reinit() of a filled matrix keeps its old pattern,
+      // and entries that were zero then (open contact pairs) were lost.
+      trilinos_matrix.clear();
       trilinos_matrix.reinit(matrix);
       const Epetra_CrsMatrix &epetra = trilinos_matrix.trilinos_matrix();
       epetra_rhs      = std::make_unique<Epetra_Vector>(epetra.RangeMap());
