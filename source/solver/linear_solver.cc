@@ -262,8 +262,15 @@ namespace deepdraw
         amesos = std::make_unique<Amesos_Klu>(*epetra_problem);
       if (amesos->SymbolicFactorization() != 0
           || amesos->NumericFactorization() != 0)
+      {
+        std::string detail;
+        if (auto *mumps = dynamic_cast<Amesos_Mumps *>(amesos.get()))
+          detail = " (MUMPS INFOG(1) = " + std::to_string(mumps->GetINFOG()[0])
+                   + ", INFOG(2) = " + std::to_string(mumps->GetINFOG()[1])
+                   + ")";
         throw std::runtime_error("Amesos " + type
-                                 + " could not factorise the matrix");
+                                 + " could not factorise the matrix" + detail);
+      }
     }
 
 
