@@ -72,7 +72,7 @@ namespace deepdraw
 
           if (numeric != nullptr)
             umfpack_dl_free_numeric(&numeric);
-          if (symbolic != nullptr && numeric_factorization())
+          if (symbolic != nullptr && numeric_factorization(true))
             return;
           // First factorisation of this pattern, or the kept ordering gave a
           // singular or badly conditioned factorisation: analyse afresh.
@@ -87,7 +87,7 @@ namespace deepdraw
                                                  &symbolic,
                                                  nullptr,
                                                  nullptr);
-          if (status != UMFPACK_OK || !numeric_factorization())
+          if (status != UMFPACK_OK || !numeric_factorization(false))
             throw std::runtime_error("UMFPACK could not factorise the matrix "
                                      "(status "
                                      + std::to_string(status) + ")");
@@ -159,10 +159,12 @@ namespace deepdraw
           }
         }
 
-        // False if the factorisation is singular or its reciprocal
-        // condition estimate is below 1e-14 (then the ordering is redone).
+        // False if the factorisation is singular or, with a kept ordering
+        // (check_condition), its reciprocal condition estimate is below
+        // 1e-14: then the ordering is redone. A fresh ordering is accepted
+        // as UMFPACK gives it, as deal.II's SparseDirectUMFPACK does.
         bool
-        numeric_factorization()
+        numeric_factorization(const bool check_condition)
         {
           double     info[UMFPACK_INFO];
           const int  status = umfpack_dl_numeric(row_start.data(),
@@ -172,7 +174,9 @@ namespace deepdraw
                                                 &numeric,
                                                 nullptr,
                                                 info);
-          const bool good = status == UMFPACK_OK && info[UMFPACK_RCOND] > 1e-14;
+          const bool good
+            = status == UMFPACK_OK
+              && (!check_condition || info[UMFPACK_RCOND] > 1e-14);
           if (!good && numeric != nullptr)
             umfpack_dl_free_numeric(&numeric);
           return good;
