@@ -566,6 +566,14 @@ namespace deepdraw
     }
 
 
+    Tensor<1, 3>
+    ContactCoupling::prescribed_translation(const unsigned int k,
+                                            const double       load) const
+    {
+      return evaluate_translation(*definitions[k].translation, load);
+    }
+
+
     std::vector<types::global_dof_index>
     ContactCoupling::tool_position_unknowns() const
     {

@@ -589,18 +589,10 @@ namespace deepdraw
              load += output_parameters.output_interval)
           landing_loads.push_back(load);
       // The thickness profiles are computed at their travels, not
-      // interpolated (D6); the end is landed on anyway.
-      for (const double travel : profile_travels)
-        if (travel > 0. && travel < increment_parameters.final_load)
-          landing_loads.push_back(travel);
-      std::sort(landing_loads.begin(), landing_loads.end());
-      landing_loads.erase(std::unique(landing_loads.begin(),
-                                      landing_loads.end(),
-                                      [](const double a, const double b) {
-                                        return std::abs(a - b)
-                                               < 1e-9 * std::max(1., b);
-                                      }),
-                          landing_loads.end());
+      // interpolated (D6).
+      landing_loads.insert(landing_loads.end(),
+                           profile_travels.begin(),
+                           profile_travels.end());
       solver::IncrementControl control(increment_parameters, landing_loads);
 
       Timer run_timer;

@@ -147,15 +147,10 @@ namespace deepdraw
           if (punch.force_controlled)
             punch_direction = punch.axis;
           else
-          {
-            Vector<double> start(3), end(3);
-            punch.translation->set_time(0.);
-            punch.translation->vector_value(Point<1>(), start);
-            punch.translation->set_time(process_parameters.punch_travel);
-            punch.translation->vector_value(Point<1>(), end);
-            for (unsigned int d = 0; d < 3; ++d)
-              punch_direction[d] = end[d] - start[d];
-          }
+            punch_direction
+              = contact.prescribed_translation(punch_tool,
+                                               process_parameters.punch_travel)
+                - contact.prescribed_translation(punch_tool, 0.);
           if (punch_direction.norm() > 0.)
             punch_direction /= punch_direction.norm();
           else

@@ -82,6 +82,15 @@ namespace deepdraw
     {
       landing_loads.push_back(parameters.final_load);
       std::sort(landing_loads.begin(), landing_loads.end());
+      // Loads requested twice (a VTU interval and a thickness-profile
+      // travel, up to summation round-off) are one landing.
+      landing_loads.erase(std::unique(landing_loads.begin(),
+                                      landing_loads.end(),
+                                      [](const double a, const double b) {
+                                        return std::abs(a - b)
+                                               < 1e-9 * std::max(1., b);
+                                      }),
+                          landing_loads.end());
     }
 
 

@@ -149,6 +149,9 @@ namespace deepdraw
       tools() const;
       const std::vector<ToolDefinition> &
       tool_definitions() const;
+      // Translation of displacement-controlled tool k at load t.
+      Tensor<1, 3>
+      prescribed_translation(unsigned int k, double load) const;
       // Unknowns of the positions of the force-controlled tools.
       std::vector<types::global_dof_index>
       tool_position_unknowns() const;
