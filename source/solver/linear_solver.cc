@@ -362,17 +362,27 @@ namespace deepdraw
         std::vector<int>              border_position(n, -1);
         for (unsigned int k = 0; k < n_b; ++k)
           border_position[bordered[k]] = k;
-        data.reduced_matrix = 0.;
+        // The reduced rows keep the order of the full rows (diagonal first,
+        // then ascending columns, and the renumbering is monotone): copy in
+        // step instead of searching each entry.
         for (types::global_dof_index i = 0; i < n; ++i)
+        {
+          const int bi = border_position[i];
+          auto      reduced_entry
+            = bi < 0 ? data.reduced_matrix.begin(data.reduced_index[i])
+                     : data.reduced_matrix.end();
           for (auto entry = matrix.begin(i); entry != matrix.end(i); ++entry)
           {
             const auto   j     = entry->column();
             const double value = entry->value();
-            const int    bi = border_position[i], bj = border_position[j];
+            const int    bj    = border_position[j];
             if (bi < 0 && bj < 0)
-              data.reduced_matrix.set(data.reduced_index[i],
-                                      data.reduced_index[j],
-                                      value);
+            {
+              AssertThrow(reduced_entry->column() == data.reduced_index[j],
+                          ExcInternalError());
+              reduced_entry->value() = value;
+              ++reduced_entry;
+            }
             else if (bi < 0)
               columns[bj][data.reduced_index[i]] = value;
             else if (bj < 0)
@@ -380,6 +390,7 @@ namespace deepdraw
             else
               corner(bi, bj) = value;
           }
+        }
 
         data.factorize(parameters.type, data.reduced_matrix);
         Vector<double> reduced_rhs(n_m), y(n_m);
