@@ -295,6 +295,7 @@ namespace deepdraw
       set_up_prescribed_increment(old_load, new_load);
       if (contact.active())
         contact.start_increment(old_load, new_load);
+      start_load  = old_load;
       target_load = new_load;
     }
 
@@ -338,12 +339,52 @@ namespace deepdraw
       bool         assembled        = false;
       unsigned int changes_reported = 0;
 
-      for (iterations = 0;; ++iterations)
+      // Extrapolation predictor: the last increment scaled to this one
+      // (du, and lambda, z linearly in the load), prescribed dofs exact.
+      // Without a linear solve, so the checks count one solve fewer.
+      unsigned int skipped_solves = 0;
+      if (newton_parameters.predictor == "extrapolation"
+          && last_load_increment > 0.)
       {
+        const double ratio = (new_load - old_load) / last_load_increment;
+        for (types::global_dof_index i = 0; i < displacement_increment.size();
+             ++i)
+          displacement_increment[i]
+            = i < n_u ? ratio * converged_solution[i]
+                      : converged_solution[i]
+                          + ratio
+                              * (converged_solution[i]
+                                 - previous_converged_solution[i]);
+        predictor_constraints.distribute(displacement_increment);
+        const IncrementOutcome status
+          = assemble(displacement_increment, homogeneous_constraints, true);
+        if (status == IncrementOutcome::converged)
+        {
+          assembled      = true;
+          skipped_solves = 1;
+        }
+        else if (status == IncrementOutcome::inverted_element
+                 || status == IncrementOutcome::return_mapping_failed)
+        {
+          // Back to the tangent predictor from the converged state.
+          displacement_increment = converged_solution;
+          for (types::global_dof_index i = 0; i < n_u; ++i)
+            displacement_increment[i] = 0.;
+          contact_changes = 0;
+        }
+        else
+          return status;
+      }
+
+      for (unsigned int check = skipped_solves;; ++check)
+      {
+        // Linear solves so far: the predictor's (unless extrapolated) and
+        // the corrections'.
+        iterations = check - skipped_solves;
         // Iteration 0 is the tangent predictor (reference Eq. 13): the
         // prescribed increment enters through inhomogeneous constraints.
         const AffineConstraints<double> &constraints
-          = iterations == 0 ? predictor_constraints : homogeneous_constraints;
+          = check == 0 ? predictor_constraints : homogeneous_constraints;
         if (!assembled)
         {
           const IncrementOutcome status
@@ -353,7 +394,7 @@ namespace deepdraw
         }
         assembled = false;
 
-        if (iterations > 0)
+        if (check > 0)
         {
           Vector<double> free_residual = system_rhs;
           homogeneous_constraints.set_zero(free_residual);
@@ -394,9 +435,10 @@ namespace deepdraw
             return IncrementOutcome::not_a_number;
           // After the predictor the whole increment is "correction":
           // there only the residuals decide.
+          const bool only_predicted = iterations == 1 - skipped_solves;
           if (force_residual <= newton_parameters.force_tolerance
               && contact_residual <= newton_parameters.force_tolerance
-              && (iterations == 1
+              && (only_predicted
                   || relative_correction
                        <= newton_parameters.correction_tolerance))
             return IncrementOutcome::converged;
@@ -439,7 +481,7 @@ namespace deepdraw
           return status == IncrementOutcome::inverted_element
                  || status == IncrementOutcome::return_mapping_failed;
         };
-        if (iterations == 0)
+        if (check == 0)
         {
           // The predictor extrapolates the last increment linearly; near
           // tool radii that can fold an element. Its free part is then
@@ -513,7 +555,9 @@ namespace deepdraw
       history = trial_history;
       for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
         total_displacement[i] += displacement_increment[i];
-      converged_solution = displacement_increment;
+      previous_converged_solution = converged_solution;
+      converged_solution          = displacement_increment;
+      last_load_increment         = target_load - start_load;
       if (contact.active())
         contact.commit(displacement_increment);
       // Updated Lagrangian: the converged configuration becomes the

@@ -55,6 +55,17 @@ namespace deepdraw
                         Patterns::Double(0.),
                         "See Stagnation iterations (relative residual, as "
                         "Force tolerance).");
+      prm.declare_entry(
+        "Predictor",
+        "tangent",
+        Patterns::Selection("tangent|extrapolation"),
+        "First guess of each increment. 'tangent': the tangent predictor "
+        "(one linear solve with the prescribed increments, reference "
+        "Eq. 13). 'extrapolation': the last converged increment of the "
+        "displacements, contact forces and tool positions scaled to the new "
+        "load increment, no linear solve; the tangent predictor is used for "
+        "the first increment and when the extrapolated state inverts an "
+        "element or breaks a return mapping.");
       prm.leave_subsection();
     }
 
@@ -70,6 +81,7 @@ namespace deepdraw
       line_search_steps     = prm.get_integer("Line search steps");
       stagnation_iterations = prm.get_integer("Stagnation iterations");
       stagnation_residual   = prm.get_double("Stagnation residual");
+      predictor             = prm.get("Predictor");
       prm.leave_subsection();
     }
   } // namespace solver

@@ -251,7 +251,12 @@ namespace deepdraw
       // positions (absolute values).
       Vector<double> displacement_increment;
       Vector<double> converged_solution;
-      double         target_load = 0.;
+      // The converged unknowns before the last increment and that
+      // increment's load step (Newton/Predictor = extrapolation).
+      Vector<double> previous_converged_solution;
+      double         last_load_increment = 0.;
+      double         start_load          = 0.;
+      double         target_load         = 0.;
 
       std::vector<QuadraturePointHistory> history;
       std::vector<QuadraturePointHistory> trial_history;

@@ -3,6 +3,7 @@
 #define deepdraw_solver_newton_parameters_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <string>
 
 namespace deepdraw
 {
@@ -25,6 +26,10 @@ namespace deepdraw
       // back at once (0: never).
       unsigned int stagnation_iterations = 8;
       double       stagnation_residual   = 0.1;
+      // First guess of an increment: "tangent" (the tangent predictor of
+      // reference Eq. 13) or "extrapolation" (the last converged increment
+      // scaled to the new one; no linear solve).
+      std::string predictor = "tangent";
 
       static void
       declare_parameters(ParameterHandler &prm);
