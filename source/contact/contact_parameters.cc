@@ -46,7 +46,11 @@ namespace deepdraw
                         "1",
                         dealii::Patterns::Double(),
                         "Factor on the automatic augmentation parameter; a "
-                        "number > 0.");
+                        "number > 0. E x (element size) is the in-plane "
+                        "stiffness of a node; a thin sheet pressed by a tool "
+                        "resists by bending, about E t^3 / h^2, i.e. 0.01-0.02 "
+                        "for the square cup (t = 0.81, h = 3 mm), where 0.01 "
+                        "needed the fewest Newton iterations (D34).");
       prm.declare_entry(
         "Linearisation",
         "full",
