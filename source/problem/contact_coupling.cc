@@ -506,6 +506,23 @@ namespace deepdraw
     }
 
 
+    double
+    ContactCoupling::tool_force_error(const Vector<double> &rhs,
+                                      const double          load) const
+    {
+      double error = 0.;
+      for (unsigned int k = 0; k < definitions.size(); ++k)
+        if (definitions[k].force_controlled)
+        {
+          const double force = evaluate_scalar(*definitions[k].force, load);
+          error              = std::max(error,
+                           std::abs(rhs[position_dof[k]])
+                             / std::max(std::abs(force), 1e-300));
+        }
+      return error;
+    }
+
+
     void
     ContactCoupling::commit(const Vector<double> &solution)
     {

@@ -436,8 +436,13 @@ namespace deepdraw
           // After the predictor the whole increment is "correction":
           // there only the residuals decide.
           const bool only_predicted = iterations == 1 - skipped_solves;
+          const bool tool_forces_met
+            = newton_parameters.tool_force_tolerance <= 0.
+              || contact.tool_force_error(system_rhs, new_load)
+                   <= newton_parameters.tool_force_tolerance;
           if (force_residual <= newton_parameters.force_tolerance
               && contact_residual <= newton_parameters.force_tolerance
+              && tool_forces_met
               && (only_predicted
                   || relative_correction
                        <= newton_parameters.correction_tolerance))

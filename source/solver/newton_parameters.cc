@@ -66,6 +66,15 @@ namespace deepdraw
         "load increment, no linear solve; the tangent predictor is used for "
         "the first increment and when the extrapolated state inverts an "
         "element or breaks a return mapping.");
+      prm.declare_entry(
+        "Tool force tolerance",
+        "0",
+        Patterns::Double(0.),
+        "If > 0, convergence also requires the force of every "
+        "force-controlled tool to equal its prescribed force to this "
+        "relative error. The tool equations are part of the contact "
+        "residual of Force tolerance anyway; this bounds them separately "
+        "when Force tolerance is loose (0: no separate bound).");
       prm.leave_subsection();
     }
 
@@ -82,6 +91,7 @@ namespace deepdraw
       stagnation_iterations = prm.get_integer("Stagnation iterations");
       stagnation_residual   = prm.get_double("Stagnation residual");
       predictor             = prm.get("Predictor");
+      tool_force_tolerance  = prm.get_double("Tool force tolerance");
       prm.leave_subsection();
     }
   } // namespace solver

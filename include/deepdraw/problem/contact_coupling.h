@@ -124,6 +124,10 @@ namespace deepdraw
       // sqrt(sum |r F_sup|^2 + sum (holder residual)^2): a force (N).
       double
       residual_norm(const Vector<double> &rhs) const;
+      // Largest |sum a.P - F(t)| / |F(t)| over the force-controlled tools
+      // (0 without them).
+      double
+      tool_force_error(const Vector<double> &rhs, double load) const;
 
       // Remembers the converged tool positions and contact states.
       void

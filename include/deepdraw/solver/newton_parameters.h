@@ -30,6 +30,9 @@ namespace deepdraw
       // reference Eq. 13) or "extrapolation" (the last converged increment
       // scaled to the new one; no linear solve).
       std::string predictor = "tangent";
+      // Error of the force of a force-controlled tool relative to the
+      // prescribed force that convergence allows in addition (0: none).
+      double tool_force_tolerance = 0.;
 
       static void
       declare_parameters(ParameterHandler &prm);
