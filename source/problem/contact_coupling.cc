@@ -508,16 +508,18 @@ namespace deepdraw
 
     double
     ContactCoupling::tool_force_error(const Vector<double> &rhs,
-                                      const double          load) const
+                                      const double          load,
+                                      const double zero_force_scale) const
     {
       double error = 0.;
       for (unsigned int k = 0; k < definitions.size(); ++k)
         if (definitions[k].force_controlled)
         {
-          const double force = evaluate_scalar(*definitions[k].force, load);
-          error              = std::max(error,
+          const double force
+            = std::abs(evaluate_scalar(*definitions[k].force, load));
+          error = std::max(error,
                            std::abs(rhs[position_dof[k]])
-                             / std::max(std::abs(force), 1e-300));
+                             / (force > 0. ? force : zero_force_scale));
         }
       return error;
     }

@@ -438,7 +438,7 @@ namespace deepdraw
           const bool only_predicted = iterations == 1 - skipped_solves;
           const bool tool_forces_met
             = newton_parameters.tool_force_tolerance <= 0.
-              || contact.tool_force_error(system_rhs, new_load)
+              || contact.tool_force_error(system_rhs, new_load, reference)
                    <= newton_parameters.tool_force_tolerance;
           if (force_residual <= newton_parameters.force_tolerance
               && contact_residual <= newton_parameters.force_tolerance

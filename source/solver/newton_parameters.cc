@@ -72,7 +72,8 @@ namespace deepdraw
         Patterns::Double(0.),
         "If > 0, convergence also requires the force of every "
         "force-controlled tool to equal its prescribed force to this "
-        "relative error. The tool equations are part of the contact "
+        "relative error (a zero prescribed force: relative to the force "
+        "scale of Force tolerance). The tool equations are part of the contact "
         "residual of Force tolerance anyway; this bounds them separately "
         "when Force tolerance is loose (0: no separate bound).");
       prm.leave_subsection();

@@ -125,9 +125,12 @@ namespace deepdraw
       double
       residual_norm(const Vector<double> &rhs) const;
       // Largest |sum a.P - F(t)| / |F(t)| over the force-controlled tools
-      // (0 without them).
+      // (0 without them); a tool with F(t) = 0 is measured against
+      // zero_force_scale (N) instead.
       double
-      tool_force_error(const Vector<double> &rhs, double load) const;
+      tool_force_error(const Vector<double> &rhs,
+                       double                load,
+                       double                zero_force_scale) const;
 
       // Remembers the converged tool positions and contact states.
       void
