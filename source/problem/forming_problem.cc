@@ -315,10 +315,14 @@ namespace deepdraw
       const types::global_dof_index n_u = dof_handler.n_dofs();
       prepare_increment(old_load, new_load);
       // Displacement increment 0; contact forces and tool positions start
-      // from their converged values.
-      displacement_increment = converged_solution;
-      for (types::global_dof_index i = 0; i < n_u; ++i)
-        displacement_increment[i] = 0.;
+      // from their converged values (the tangent predictor's start).
+      const auto start_from_converged_state = [&]()
+      {
+        displacement_increment = converged_solution;
+        for (types::global_dof_index i = 0; i < n_u; ++i)
+          displacement_increment[i] = 0.;
+      };
+      start_from_converged_state();
       residual_history.clear();
       contact_residual_history.clear();
       contact_changes = 0;
@@ -367,9 +371,7 @@ namespace deepdraw
                  || status == IncrementOutcome::return_mapping_failed)
         {
           // Back to the tangent predictor from the converged state.
-          displacement_increment = converged_solution;
-          for (types::global_dof_index i = 0; i < n_u; ++i)
-            displacement_increment[i] = 0.;
+          start_from_converged_state();
           contact_changes = 0;
         }
         else
@@ -435,7 +437,8 @@ namespace deepdraw
             return IncrementOutcome::not_a_number;
           // After the predictor the whole increment is "correction":
           // there only the residuals decide.
-          const bool only_predicted = iterations == 1 - skipped_solves;
+          // First check after the predictor (tangent or extrapolated).
+          const bool only_predicted = check == 1;
           const bool tool_forces_met
             = newton_parameters.tool_force_tolerance <= 0.
               || contact.tool_force_error(system_rhs, new_load, reference)
