@@ -27,14 +27,7 @@ namespace deepdraw
       material::MaterialParameters::declare_parameters(prm);
       prm.leave_subsection();
       prm.enter_subsection("Finite element");
-      prm.declare_entry("Integration",
-                        "selective reduced",
-                        Patterns::Selection("selective reduced|full"),
-                        "'selective reduced': 2x2x2 Gauss points with the "
-                        "hydrostatic part of the gradients replaced by its "
-                        "cell average (no volumetric locking); 'full': plain "
-                        "2x2x2 Gauss integration (locks under isochoric "
-                        "plastic flow; for comparison).");
+      fe::ElementParameters::declare_parameters(prm);
       prm.leave_subsection();
       PrescribedDisplacements::declare_parameters(prm);
       solver::IncrementControlParameters::declare_parameters(prm);
@@ -59,8 +52,7 @@ namespace deepdraw
       material_parameters.parse_parameters(prm);
       prm.leave_subsection();
       prm.enter_subsection("Finite element");
-      selective_reduced_integration
-        = (prm.get("Integration") == "selective reduced");
+      element_parameters.parse_parameters(prm);
       prm.leave_subsection();
       prescribed.parse_parameters(prm,
                                   geometry.symmetry_plane_x,
@@ -87,6 +79,9 @@ namespace deepdraw
 
       material
         = std::make_unique<material::HillPlasticity>(material_parameters);
+      element = std::make_unique<fe::HexahedronElement>(element_parameters,
+                                                        *material,
+                                                        fe);
       linear_solver
         = std::make_unique<solver::LinearSolver>(linear_solver_parameters);
       setup_system();
@@ -109,12 +104,6 @@ namespace deepdraw
       }
       dof_handler.distribute_dofs(fe);
       scalar_dof_handler.distribute_dofs(fe_scalar);
-
-      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-      {
-        local_component[i] = fe.system_to_component_index(i).first;
-        local_node[i]      = fe.system_to_component_index(i).second;
-      }
 
       vertex_dofs.assign(triangulation.n_vertices(),
                          {{numbers::invalid_dof_index,
@@ -213,6 +202,12 @@ namespace deepdraw
       history.assign(triangulation.n_active_cells() * fe::n_weighted_points,
                      QuadraturePointHistory());
       trial_history = history;
+      enhanced_parameters.assign(
+        fe::n_enhanced_parameters(element_parameters.technology) > 0
+          ? triangulation.n_active_cells()
+          : 0,
+        fe::EnhancedParameters());
+      trial_enhanced_parameters = enhanced_parameters;
 
       reaction_faces.clear();
       for (const PrescribedDisplacement &entry : prescribed.entries)
@@ -267,6 +262,8 @@ namespace deepdraw
           return "inverted element (det F <= 0)";
         case IncrementOutcome::return_mapping_failed:
           return "local return mapping failed";
+        case IncrementOutcome::enhanced_not_converged:
+          return "enhanced parameters of an element did not converge";
         case IncrementOutcome::linear_solver_failed:
           return "linear solver failed";
       }
@@ -307,6 +304,15 @@ namespace deepdraw
     }
 
 
+    void
+    FormingProblem::start_enhanced_parameters(const double ratio)
+    {
+      trial_enhanced_parameters = enhanced_parameters;
+      for (fe::EnhancedParameters &cell : trial_enhanced_parameters)
+        cell.scale(ratio);
+    }
+
+
     FormingProblem::IncrementOutcome
     FormingProblem::solve_increment(const double  old_load,
                                     const double  new_load,
@@ -323,6 +329,12 @@ namespace deepdraw
           displacement_increment[i] = 0.;
       };
       start_from_converged_state();
+      // The element-internal unknowns start as du does: from rest, or the
+      // last increment scaled (extrapolation predictor).
+      const bool extrapolate = newton_parameters.predictor == "extrapolation"
+                               && last_load_increment > 0.;
+      start_enhanced_parameters(
+        extrapolate ? (new_load - old_load) / last_load_increment : 0.);
       residual_history.clear();
       contact_residual_history.clear();
       contact_changes = 0;
@@ -347,8 +359,7 @@ namespace deepdraw
       // (du, and lambda, z linearly in the load), prescribed dofs exact.
       // Without a linear solve, so the checks count one solve fewer.
       unsigned int skipped_solves = 0;
-      if (newton_parameters.predictor == "extrapolation"
-          && last_load_increment > 0.)
+      if (extrapolate)
       {
         const double ratio = (new_load - old_load) / last_load_increment;
         for (types::global_dof_index i = 0; i < displacement_increment.size();
@@ -368,10 +379,12 @@ namespace deepdraw
           skipped_solves = 1;
         }
         else if (status == IncrementOutcome::inverted_element
-                 || status == IncrementOutcome::return_mapping_failed)
+                 || status == IncrementOutcome::return_mapping_failed
+                 || status == IncrementOutcome::enhanced_not_converged)
         {
           // Back to the tangent predictor from the converged state.
           start_from_converged_state();
+          start_enhanced_parameters(0.);
           contact_changes = 0;
         }
         else
@@ -487,7 +500,8 @@ namespace deepdraw
         const auto         failed_point = [](const IncrementOutcome status)
         {
           return status == IncrementOutcome::inverted_element
-                 || status == IncrementOutcome::return_mapping_failed;
+                 || status == IncrementOutcome::return_mapping_failed
+                 || status == IncrementOutcome::enhanced_not_converged;
         };
         if (check == 0)
         {
@@ -560,7 +574,8 @@ namespace deepdraw
     void
     FormingProblem::commit_increment()
     {
-      history = trial_history;
+      history             = trial_history;
+      enhanced_parameters = trial_enhanced_parameters;
       for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
         total_displacement[i] += displacement_increment[i];
       previous_converged_solution = converged_solution;
@@ -615,9 +630,8 @@ namespace deepdraw
                 << dof_handler.n_dofs() << " displacement unknowns, "
                 << displacement_increment.size() - dof_handler.n_dofs()
                 << " contact unknowns, "
-                << (selective_reduced_integration ? "selective reduced"
-                                                  : "full")
-                << " integration" << std::endl;
+                << fe::to_string(element_parameters.technology) << " element"
+                << std::endl;
       if (contact.active())
       {
         contact.start_increment(0., 0.);
@@ -667,7 +681,8 @@ namespace deepdraw
           std::cout << "  load " << format_load(new_load) << ": "
                     << describe(outcome) << ", cutting the increment back"
                     << std::endl;
-          trial_history = history;
+          trial_history             = history;
+          trial_enhanced_parameters = enhanced_parameters;
           if (!control.cut_back())
           {
             const bool too_small = control.next_increment()

@@ -57,7 +57,7 @@ namespace deepdraw
       // Σ JxW over the Gauss points of the current configuration: exact for
       // the trilinear geometry (volume conservation check, DESIGN §5).
       double volume = 0.;
-      for (const CellGeometry &cell : cell_geometry)
+      for (const fe::CellGeometry &cell : cell_geometry)
         for (const double w : cell.JxW)
           volume += w;
       return volume;

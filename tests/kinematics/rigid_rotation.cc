@@ -9,7 +9,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deepdraw/material/hill_plasticity.h>
 #include <deepdraw/material/material_parameters.h>
-#include <deepdraw/problem/quadrature_point_update.h>
+#include <deepdraw/fe/quadrature_point_update.h>
 
 using namespace dealii;
 using namespace deepdraw;
@@ -47,7 +47,7 @@ namespace
     const material::HillPlasticity material(parameters);
 
     // Pre-stress: a plastic multiaxial stretch.
-    problem::QuadraturePointHistory state, next;
+    fe::QuadraturePointHistory state, next;
     Tensor<2, 3>                    P;
     bool                            plastic = false;
     Tensor<2, 3>                    H;
@@ -56,18 +56,18 @@ namespace
     H[0][1] = 0.004;
     H[2][0] = -0.003;
     deepdraw_test::check_true("pre-stressing increment succeeds",
-                              problem::update_quadrature_point(material,
+                              fe::update_quadrature_point(material,
                                                                state,
                                                                H,
                                                                next,
                                                                P,
                                                                nullptr,
                                                                plastic)
-                                == problem::PointStatus::ok);
+                                == fe::PointStatus::ok);
     deepdraw_test::check_true("pre-stress is plastic", plastic);
     state = next;
 
-    const Tensor<2, 3> sigma_0 = problem::cauchy_stress(state);
+    const Tensor<2, 3> sigma_0 = fe::cauchy_stress(state);
     const Tensor<2, 3> X_0     = state.material_axes
                              * Tensor<2, 3>(state.state.back_stress)
                              * transpose(state.material_axes);
@@ -81,7 +81,7 @@ namespace
       // Rigid rotation of the increment: F = step, H = step - I.
       const Tensor<2, 3> H_rotation
         = step - Tensor<2, 3>(unit_symmetric_tensor<3>());
-      problem::update_quadrature_point(material,
+      fe::update_quadrature_point(material,
                                        state,
                                        H_rotation,
                                        next,
@@ -92,7 +92,7 @@ namespace
     }
 
     const Tensor<2, 3> Q     = rotation_matrix(axis, angle);
-    const Tensor<2, 3> sigma = problem::cauchy_stress(state);
+    const Tensor<2, 3> sigma = fe::cauchy_stress(state);
     const Tensor<2, 3> X     = state.material_axes
                            * Tensor<2, 3>(state.state.back_stress)
                            * transpose(state.material_axes);

@@ -10,7 +10,7 @@
 #include <cmath>
 #include <deepdraw/material/hill_plasticity.h>
 #include <deepdraw/material/material_parameters.h>
-#include <deepdraw/problem/quadrature_point_update.h>
+#include <deepdraw/fe/quadrature_point_update.h>
 
 using namespace dealii;
 using namespace deepdraw;
@@ -32,12 +32,12 @@ namespace
     Tensor<2, 3> H;
     H[0][1] = gamma_end / n_increments;
 
-    problem::QuadraturePointHistory state, next;
+    fe::QuadraturePointHistory state, next;
     Tensor<2, 3>                    P;
     bool                            plastic = false;
     for (unsigned int i = 0; i < n_increments; ++i)
     {
-      problem::update_quadrature_point(material,
+      fe::update_quadrature_point(material,
                                        state,
                                        H,
                                        next,
@@ -46,7 +46,7 @@ namespace
                                        plastic);
       state = next;
     }
-    const Tensor<2, 3> sigma = problem::cauchy_stress(state);
+    const Tensor<2, 3> sigma = fe::cauchy_stress(state);
     const double       s12   = std::sin(gamma_end);
     const double       s11   = 1. - std::cos(gamma_end);
     if (report)

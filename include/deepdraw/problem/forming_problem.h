@@ -18,6 +18,10 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
+#include <deepdraw/fe/cell_geometry.h>
+#include <deepdraw/fe/element_technology.h>
+#include <deepdraw/fe/hexahedron_element.h>
+#include <deepdraw/fe/quadrature_point_update.h>
 #include <deepdraw/geometry/square_cup_tools.h>
 #include <deepdraw/io/csv_file.h>
 #include <deepdraw/io/output_parameters.h>
@@ -28,7 +32,6 @@
 #include <deepdraw/problem/contact_coupling.h>
 #include <deepdraw/problem/prescribed_displacements.h>
 #include <deepdraw/problem/process_parameters.h>
-#include <deepdraw/problem/quadrature_point_update.h>
 #include <deepdraw/solver/increment_control.h>
 #include <deepdraw/solver/linear_solver.h>
 #include <deepdraw/solver/newton_parameters.h>
@@ -41,6 +44,7 @@ namespace deepdraw
   namespace problem
   {
     using namespace dealii;
+    using fe::QuadraturePointHistory;
 
     // Thrown when the run cannot continue; the message says why.
     class RunFailure : public std::runtime_error
@@ -138,16 +142,6 @@ namespace deepdraw
       n_displacement_dofs() const;
 
     private:
-      struct CellGeometry
-      {
-        // Gradients wrt x_t of the 8 scalar shape functions at the 8 Gauss
-        // points, and their volume average (the constant volumetric
-        // gradient of SRI); JxW of the Gauss points.
-        std::array<Tensor<1, 3>, 64> gradient;
-        std::array<Tensor<1, 3>, 8>  mean_gradient;
-        std::array<double, 8>        JxW;
-      };
-
       enum class IncrementOutcome
       {
         converged,
@@ -157,6 +151,7 @@ namespace deepdraw
         not_a_number,
         inverted_element,
         return_mapping_failed,
+        enhanced_not_converged,
         linear_solver_failed
       };
       static std::string
@@ -174,6 +169,9 @@ namespace deepdraw
       assemble(const Vector<double>            &displacement_increment,
                const AffineConstraints<double> &constraints,
                bool                             assemble_matrix);
+      // Trial element-internal unknowns: the committed ones times ratio.
+      void
+      start_enhanced_parameters(double ratio);
       IncrementOutcome
       solve_increment(double        old_load,
                       double        new_load,
@@ -206,27 +204,24 @@ namespace deepdraw
       io::OutputParameters               output_parameters;
       geometry::SquareCupToolParameters  square_cup_tool_parameters;
       ContactCoupling                    contact;
-      bool                               selective_reduced_integration = true;
+      fe::ElementParameters              element_parameters;
 
       std::unique_ptr<material::HillPlasticity> material;
+      std::unique_ptr<fe::HexahedronElement>    element;
 
       // Discretisation
-      Triangulation<3>          triangulation;
-      std::vector<Point<3>>     initial_vertices;
-      std::vector<unsigned int> vertex_column;
-      std::vector<unsigned int> vertex_layer;
-      FESystem<3>               fe;
-      DoFHandler<3>             dof_handler;
-      FE_Q<3>                   fe_scalar;
-      DoFHandler<3>             scalar_dof_handler;
-      // local dof i of a cell = component local_component[i] of node
-      // local_node[i]
-      std::array<unsigned int, 24>                        local_component;
-      std::array<unsigned int, 24>                        local_node;
+      Triangulation<3>                                    triangulation;
+      std::vector<Point<3>>                               initial_vertices;
+      std::vector<unsigned int>                           vertex_column;
+      std::vector<unsigned int>                           vertex_layer;
+      FESystem<3>                                         fe;
+      DoFHandler<3>                                       dof_handler;
+      FE_Q<3>                                             fe_scalar;
+      DoFHandler<3>                                       scalar_dof_handler;
       std::vector<std::array<types::global_dof_index, 3>> vertex_dofs;
       std::vector<Point<3>>                               dof_initial_position;
       std::vector<unsigned int>                           dof_component;
-      std::vector<CellGeometry>                           cell_geometry;
+      std::vector<fe::CellGeometry>                       cell_geometry;
       std::array<std::vector<types::global_dof_index>, 6> face_dofs;
       // Bottom and top vertex of every through-thickness column.
       std::vector<std::array<unsigned int, 2>> column_end_vertices;
@@ -260,6 +255,10 @@ namespace deepdraw
 
       std::vector<QuadraturePointHistory> history;
       std::vector<QuadraturePointHistory> trial_history;
+      // Element-internal unknowns per cell (incompatible modes; empty
+      // otherwise), committed and restored with the history.
+      std::vector<fe::EnhancedParameters> enhanced_parameters;
+      std::vector<fe::EnhancedParameters> trial_enhanced_parameters;
 
       std::unique_ptr<solver::LinearSolver> linear_solver;
 

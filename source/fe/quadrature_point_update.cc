@@ -1,9 +1,9 @@
+#include <deepdraw/fe/quadrature_point_update.h>
 #include <deepdraw/kinematics/hughes_winget_increment.h>
-#include <deepdraw/problem/quadrature_point_update.h>
 
 namespace deepdraw
 {
-  namespace problem
+  namespace fe
   {
     PointStatus
     update_quadrature_point(const material::HillPlasticity &material,
@@ -151,5 +151,5 @@ namespace deepdraw
       const Tensor<2, 3> &R = history.material_axes;
       return R * Tensor<2, 3>(history.state.stress) * transpose(R);
     }
-  } // namespace problem
+  } // namespace fe
 } // namespace deepdraw

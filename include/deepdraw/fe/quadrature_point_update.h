@@ -12,8 +12,8 @@
 //   sigma = R_{n+1} sigma^ R_{n+1}^T, P = det(F) sigma F^{-T}, F = I + H.
 // dP/dH differentiates every step of this chain (algorithmic tangent,
 // rotation and geometric terms), so Newton converges quadratically.
-#ifndef deepdraw_problem_quadrature_point_update_h
-#define deepdraw_problem_quadrature_point_update_h
+#ifndef deepdraw_fe_quadrature_point_update_h
+#define deepdraw_fe_quadrature_point_update_h
 
 #include <deal.II/base/tensor.h>
 #include <deepdraw/material/hill_plasticity.h>
@@ -21,7 +21,7 @@
 
 namespace deepdraw
 {
-  namespace problem
+  namespace fe
   {
     using namespace dealii;
 
@@ -56,7 +56,7 @@ namespace deepdraw
     // Cauchy stress in global coordinates.
     Tensor<2, 3>
     cauchy_stress(const QuadraturePointHistory &history);
-  } // namespace problem
+  } // namespace fe
 } // namespace deepdraw
 
 #endif

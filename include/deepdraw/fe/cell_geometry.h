@@ -1,0 +1,46 @@
+// What the element needs of a cell's shape in the configuration x_t: computed
+// once per increment, after the mesh has moved (doc/theory.md §1, §3).
+#ifndef deepdraw_fe_cell_geometry_h
+#define deepdraw_fe_cell_geometry_h
+
+#include <array>
+#include <deal.II/base/tensor.h>
+#include <deal.II/fe/fe_values.h>
+
+namespace deepdraw
+{
+  namespace fe
+  {
+    using namespace dealii;
+
+    struct CellGeometry
+    {
+      // Gradients wrt x_t of the 8 scalar shape functions at the 8 Gauss
+      // points, [q * 8 + a].
+      std::array<Tensor<1, 3>, 64> gradient;
+      // Their volume average (1/V) int grad N_a dV: the constant
+      // volumetric gradient of the mean dilatation.
+      std::array<Tensor<1, 3>, 8> mean_gradient;
+      // Gradients of the three incompatible modes at the Gauss points,
+      // [q * 3 + m]: (j0 / j) J0^{-T} xi_m e_m (Taylor's form; their volume
+      // integral vanishes, so constant stress gives no enhanced force).
+      std::array<Tensor<1, 3>, 24> mode_gradient;
+      std::array<double, 8>        JxW;
+    };
+
+    // fe_values: a scalar FE_Q(1) on the selective reduced quadrature
+    // (8 Gauss points + centre), reinit'ed on the cell, with gradients,
+    // JxW values and Jacobians.
+    void
+    compute_cell_geometry(const FEValues<3> &fe_values, CellGeometry &geometry);
+
+    // The update flags compute_cell_geometry needs.
+    inline UpdateFlags
+    cell_geometry_flags()
+    {
+      return update_gradients | update_JxW_values | update_jacobians;
+    }
+  } // namespace fe
+} // namespace deepdraw
+
+#endif

@@ -1,0 +1,60 @@
+// The element technologies of the sheet's 8-node hexahedron, chosen in
+// `subsection Finite element` (doc/theory.md §3, doc/decisions.md D38).
+#ifndef deepdraw_fe_element_technology_h
+#define deepdraw_fe_element_technology_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <string>
+
+namespace deepdraw
+{
+  namespace fe
+  {
+    using namespace dealii;
+
+    enum class ElementTechnology
+    {
+      // 2x2x2 Gauss integration with the nine Wilson-Taylor incompatible
+      // modes (Simo-Armero enhanced gradient): no shear, trapezoidal or
+      // volumetric locking in bending.
+      incompatible_modes,
+      // Mean-dilatation volumetric part only (the reference model's
+      // element; locks in bending).
+      selective_reduced,
+      // Plain 2x2x2 Gauss integration (locks volumetrically and in
+      // bending; for comparison).
+      full
+    };
+
+    // The name used in the prm file.
+    std::string
+    to_string(ElementTechnology technology);
+
+    // Whether the hydrostatic part of the compatible gradient is the cell
+    // average (mean dilatation).
+    bool
+    uses_mean_dilatation(ElementTechnology technology);
+
+    // Enhanced (element-internal) parameters per cell: 9 or 0.
+    unsigned int
+    n_enhanced_parameters(ElementTechnology technology);
+
+    struct ElementParameters
+    {
+      ElementTechnology technology = ElementTechnology::incompatible_modes;
+      // Local Newton of the enhanced parameters: converged when the
+      // largest enhanced residual is below this fraction of the largest
+      // nodal force of the element.
+      double       enhanced_tolerance      = 1e-10;
+      unsigned int enhanced_max_iterations = 25;
+
+      // Entries of `subsection Finite element` (the caller enters it).
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+  } // namespace fe
+} // namespace deepdraw
+
+#endif

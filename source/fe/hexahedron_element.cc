@@ -1,0 +1,375 @@
+#include <cmath>
+#include <deepdraw/fe/hexahedron_element.h>
+#include <deepdraw/fe/selective_reduced_quadrature.h>
+#include <limits>
+
+namespace deepdraw
+{
+  namespace fe
+  {
+    void
+    EnhancedParameters::scale(const double ratio)
+    {
+      for (double &value : values)
+        value *= ratio;
+      for (double &value : correction)
+        value *= ratio;
+      for (double &value : evaluated_at)
+        value *= ratio;
+    }
+
+
+    HexahedronElement::HexahedronElement(
+      const ElementParameters        &parameters,
+      const material::HillPlasticity &material,
+      const FiniteElement<3>         &fe)
+        : parameters(parameters)
+        , material(material)
+        , n_enhanced(n_enhanced_parameters(parameters.technology))
+        , mean_dilatation(uses_mean_dilatation(parameters.technology))
+    {
+      AssertDimension(fe.n_dofs_per_cell(), dofs_per_cell);
+      for (unsigned int i = 0; i < dofs_per_cell; ++i)
+      {
+        local_component[i] = fe.system_to_component_index(i).first;
+        local_node[i]      = fe.system_to_component_index(i).second;
+      }
+    }
+
+
+    ElementTechnology
+    HexahedronElement::technology() const
+    {
+      return parameters.technology;
+    }
+
+
+    ElementStatus
+    HexahedronElement::integrate(const CellGeometry           &geometry,
+                                 const double                 *du,
+                                 const double                 *alpha,
+                                 const QuadraturePointHistory *old_history,
+                                 QuadraturePointHistory       *trial_history,
+                                 double                       *residual,
+                                 double                       *matrix,
+                                 unsigned int &plastic_points) const
+    {
+      const unsigned int n = dofs_per_cell + n_enhanced;
+      Tensor<1, 3>       u[8], alpha_m[3];
+      for (unsigned int i = 0; i < dofs_per_cell; ++i)
+        u[local_node[i]][local_component[i]] = du[i];
+      for (unsigned int k = 0; k < n_enhanced; ++k)
+        alpha_m[k / 3][k % 3] = alpha[k];
+      // Cell-average trace of the compatible H (mean dilatation).
+      double mean_divergence = 0.;
+      for (unsigned int a = 0; a < 8; ++a)
+        mean_divergence += u[a] * geometry.mean_gradient[a];
+
+      std::fill(residual, residual + n, 0.);
+      if (matrix != nullptr)
+        std::fill(matrix, matrix + n * n, 0.);
+      Tensor<4, 3> A;
+      Tensor<2, 3> P;
+      // Column j: G_j = e_{component[j]} (x) vector[j] + beta[j] I.
+      unsigned int        component[max_element_size];
+      const Tensor<1, 3> *vector[max_element_size];
+      double              beta[max_element_size];
+      for (unsigned int k = 0; k < n_enhanced; ++k)
+      {
+        component[dofs_per_cell + k] = k % 3;
+        beta[dofs_per_cell + k]      = 0.;
+      }
+      for (unsigned int i = 0; i < dofs_per_cell; ++i)
+        component[i] = local_component[i];
+
+      for (unsigned int q = 0; q < n_weighted_points; ++q)
+      {
+        const Tensor<1, 3> *g       = &geometry.gradient[q * 8];
+        const Tensor<1, 3> *g_modes = &geometry.mode_gradient[q * 3];
+        // H: compatible part (its trace replaced by the cell average with
+        // mean dilatation) plus the enhanced part.
+        Tensor<2, 3> H;
+        for (unsigned int a = 0; a < 8; ++a)
+          H += outer_product(u[a], g[a]);
+        if (mean_dilatation)
+        {
+          const double correction = (mean_divergence - trace(H)) / 3.;
+          for (unsigned int d = 0; d < 3; ++d)
+            H[d][d] += correction;
+        }
+        for (unsigned int m = 0; m < n_enhanced / 3; ++m)
+          H += outer_product(alpha_m[m], g_modes[m]);
+
+        bool              plastic = false;
+        const PointStatus status
+          = update_quadrature_point(material,
+                                    old_history[q],
+                                    H,
+                                    trial_history[q],
+                                    P,
+                                    matrix != nullptr ? &A : nullptr,
+                                    plastic);
+        if (status == PointStatus::inverted)
+          return ElementStatus::inverted;
+        if (status != PointStatus::ok)
+          return ElementStatus::return_mapping_failed;
+        plastic_points += plastic;
+
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+        {
+          const unsigned int a = local_node[i], c = local_component[i];
+          vector[i] = &g[a];
+          beta[i]   = mean_dilatation
+                        ? (geometry.mean_gradient[a][c] - g[a][c]) / 3.
+                        : 0.;
+        }
+        for (unsigned int k = 0; k < n_enhanced; ++k)
+          vector[dofs_per_cell + k] = &g_modes[k / 3];
+
+        const double w       = geometry.JxW[q];
+        const double trace_P = trace(P);
+        for (unsigned int i = 0; i < n; ++i)
+          residual[i] += w * (P[component[i]] * *vector[i] + beta[i] * trace_P);
+        if (matrix == nullptr)
+          continue;
+
+        // K_ij += w G_i : A : G_j in two sparse steps: T_j = w A : G_j,
+        // stored as T[c][m][j] = (T_j)_cm, then
+        //   K_ij += sum_m v_i[m] T[c_i][m][j] + beta_i tr T_j,
+        // contiguous in j.
+        double A_trace[3][3]; // sum_l A[c][m][l][l]
+        for (unsigned int c = 0; c < 3; ++c)
+          for (unsigned int m = 0; m < 3; ++m)
+            A_trace[c][m] = A[c][m][0][0] + A[c][m][1][1] + A[c][m][2][2];
+        double T[3][3][max_element_size], trace_T[max_element_size];
+        for (unsigned int j = 0; j < n; ++j)
+        {
+          const Tensor<1, 3> &v = *vector[j];
+          const unsigned int  d = component[j];
+          for (unsigned int c = 0; c < 3; ++c)
+            for (unsigned int m = 0; m < 3; ++m)
+            {
+              const Tensor<1, 3> &A_cmd = A[c][m][d];
+              T[c][m][j]                = w
+                           * (A_cmd[0] * v[0] + A_cmd[1] * v[1]
+                              + A_cmd[2] * v[2] + beta[j] * A_trace[c][m]);
+            }
+          trace_T[j] = T[0][0][j] + T[1][1][j] + T[2][2][j];
+        }
+        for (unsigned int i = 0; i < n; ++i)
+        {
+          const Tensor<1, 3> &v      = *vector[i];
+          const unsigned int  c      = component[i];
+          const double        beta_i = beta[i];
+          double             *K_i    = matrix + i * n;
+          for (unsigned int j = 0; j < n; ++j)
+            K_i[j] += v[0] * T[c][0][j] + v[1] * T[c][1][j] + v[2] * T[c][2][j]
+                      + beta_i * trace_T[j];
+        }
+      }
+      return ElementStatus::ok;
+    }
+
+
+    namespace
+    {
+      // In-place inverse of the n x n row-major matrix a (Gauss-Jordan with
+      // partial pivoting); false if it is singular or not finite.
+      bool
+      invert_in_place(double *a, const unsigned int n)
+      {
+        unsigned int pivot_row[max_enhanced];
+        double       scale = 0.;
+        for (unsigned int i = 0; i < n * n; ++i)
+          scale = std::max(scale, std::abs(a[i]));
+        if (!(scale > 0.) || !std::isfinite(scale))
+          return false;
+        for (unsigned int k = 0; k < n; ++k)
+        {
+          unsigned int p = k;
+          for (unsigned int i = k + 1; i < n; ++i)
+            if (std::abs(a[i * n + k]) > std::abs(a[p * n + k]))
+              p = i;
+          if (!(std::abs(a[p * n + k]) > 1e-14 * scale))
+            return false;
+          pivot_row[k] = p;
+          if (p != k)
+            for (unsigned int j = 0; j < n; ++j)
+              std::swap(a[k * n + j], a[p * n + j]);
+          const double inverse_pivot = 1. / a[k * n + k];
+          a[k * n + k]               = 1.;
+          for (unsigned int j = 0; j < n; ++j)
+            a[k * n + j] *= inverse_pivot;
+          for (unsigned int i = 0; i < n; ++i)
+            if (i != k)
+            {
+              const double factor = a[i * n + k];
+              a[i * n + k]        = 0.;
+              for (unsigned int j = 0; j < n; ++j)
+                a[i * n + j] -= factor * a[k * n + j];
+            }
+        }
+        // Undo the row swaps as column swaps, in reverse order.
+        for (unsigned int k = n; k-- > 0;)
+          if (pivot_row[k] != k)
+            for (unsigned int i = 0; i < n; ++i)
+              std::swap(a[i * n + k], a[i * n + pivot_row[k]]);
+        return true;
+      }
+    } // namespace
+
+
+    ElementStatus
+    HexahedronElement::evaluate(const CellGeometry           &geometry,
+                                const double                 *du,
+                                const QuadraturePointHistory *old_history,
+                                QuadraturePointHistory       *trial_history,
+                                EnhancedParameters           &enhanced,
+                                double                       *residual,
+                                FullMatrix<double>           *matrix,
+                                unsigned int &plastic_points) const
+    {
+      constexpr unsigned int nu = dofs_per_cell;
+      if (n_enhanced == 0)
+      {
+        double              element_matrix[nu * nu];
+        const ElementStatus status
+          = integrate(geometry,
+                      du,
+                      nullptr,
+                      old_history,
+                      trial_history,
+                      residual,
+                      matrix != nullptr ? element_matrix : nullptr,
+                      plastic_points);
+        if (status == ElementStatus::ok && matrix != nullptr)
+          for (unsigned int i = 0; i < nu; ++i)
+            for (unsigned int j = 0; j < nu; ++j)
+              (*matrix)(i, j) = element_matrix[i * nu + j];
+        return status;
+      }
+
+      // The enhanced parameters: predicted from the last linearisation,
+      // then Newton on r_alpha(du, alpha) = 0 at fixed du.
+      const unsigned int ne = n_enhanced, n = nu + ne;
+      double             alpha[max_enhanced];
+      for (unsigned int k = 0; k < ne; ++k)
+      {
+        alpha[k] = enhanced.values[k] + enhanced.correction[k];
+        for (unsigned int j = 0; j < nu; ++j)
+          alpha[k] += enhanced.sensitivity[k * nu + j]
+                      * (du[j] - enhanced.evaluated_at[j]);
+      }
+      double       full_residual[max_element_size];
+      double       K[max_element_size * max_element_size];
+      double       K_aa_inverse[max_enhanced * max_enhanced];
+      unsigned int points_plastic = 0;
+      // Newton with backtracking: a step that raises |r_alpha| (a point
+      // switching between elastic and plastic) is halved.
+      double alpha_base[max_enhanced], step_direction[max_enhanced];
+      double base_norm = std::numeric_limits<double>::infinity(), step = 0.;
+      bool   restarted = false;
+      for (unsigned int iteration = 0;; ++iteration)
+      {
+        if (iteration >= parameters.enhanced_max_iterations)
+          return ElementStatus::enhanced_not_converged;
+        points_plastic                  = 0;
+        const ElementStatus status      = integrate(geometry,
+                                               du,
+                                               alpha,
+                                               old_history,
+                                               trial_history,
+                                               full_residual,
+                                               K,
+                                               points_plastic);
+        double              force_scale = 0., enhanced_residual = 0., norm = 0.;
+        for (unsigned int i = 0; i < nu; ++i)
+          force_scale = std::max(force_scale, std::abs(full_residual[i]));
+        for (unsigned int k = 0; k < ne; ++k)
+        {
+          const double r    = full_residual[nu + k];
+          enhanced_residual = std::max(enhanced_residual, std::abs(r));
+          norm += r * r;
+        }
+        const bool failed_point
+          = status != ElementStatus::ok || !std::isfinite(enhanced_residual);
+        if ((failed_point || norm > base_norm) && step > 1. / 32.)
+        {
+          step *= 0.5;
+          for (unsigned int k = 0; k < ne; ++k)
+            alpha[k] = alpha_base[k] + step * step_direction[k];
+          continue;
+        }
+        if (failed_point && iteration == 0 && !restarted)
+        {
+          // The prediction failed: start again from alpha = 0.
+          restarted = true;
+          std::fill(alpha, alpha + ne, 0.);
+          continue;
+        }
+        if (failed_point)
+          return status != ElementStatus::ok
+                   ? status
+                   : ElementStatus::enhanced_not_converged;
+        for (unsigned int k = 0; k < ne; ++k)
+          for (unsigned int l = 0; l < ne; ++l)
+            K_aa_inverse[k * ne + l] = K[(nu + k) * n + nu + l];
+        if (!invert_in_place(K_aa_inverse, ne))
+          return ElementStatus::enhanced_not_converged;
+        if (enhanced_residual <= parameters.enhanced_tolerance * force_scale)
+          break;
+        base_norm = norm;
+        step      = 1.;
+        for (unsigned int k = 0; k < ne; ++k)
+        {
+          alpha_base[k]     = alpha[k];
+          step_direction[k] = 0.;
+          for (unsigned int l = 0; l < ne; ++l)
+            step_direction[k]
+              -= K_aa_inverse[k * ne + l] * full_residual[nu + l];
+          alpha[k] += step_direction[k];
+        }
+      }
+      plastic_points += points_plastic;
+
+      // Condensation. correction = -K_aa^{-1} r_a (the remaining Newton
+      // step of alpha), sensitivity = d alpha / d du = -K_aa^{-1} K_au.
+      for (unsigned int k = 0; k < ne; ++k)
+      {
+        double c = 0.;
+        for (unsigned int l = 0; l < ne; ++l)
+          c -= K_aa_inverse[k * ne + l] * full_residual[nu + l];
+        enhanced.correction[k] = c;
+        enhanced.values[k]     = alpha[k];
+        for (unsigned int j = 0; j < nu; ++j)
+        {
+          double s = 0.;
+          for (unsigned int l = 0; l < ne; ++l)
+            s -= K_aa_inverse[k * ne + l] * K[(nu + l) * n + j];
+          enhanced.sensitivity[k * nu + j] = s;
+        }
+      }
+      for (unsigned int j = 0; j < nu; ++j)
+        enhanced.evaluated_at[j] = du[j];
+      // r* = r_u + K_ua correction, K* = K_uu + K_ua sensitivity.
+      for (unsigned int i = 0; i < nu; ++i)
+      {
+        const double *K_ua = K + i * n + nu;
+        double        r    = full_residual[i];
+        for (unsigned int k = 0; k < ne; ++k)
+          r += K_ua[k] * enhanced.correction[k];
+        residual[i] = r;
+        if (matrix == nullptr)
+          continue;
+        for (unsigned int j = 0; j < nu; ++j)
+        {
+          double value = K[i * n + j];
+          for (unsigned int k = 0; k < ne; ++k)
+            value += K_ua[k] * enhanced.sensitivity[k * nu + j];
+          (*matrix)(i, j) = value;
+        }
+      }
+      return ElementStatus::ok;
+    }
+  } // namespace fe
+} // namespace deepdraw
