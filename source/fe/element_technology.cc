@@ -54,12 +54,14 @@ namespace deepdraw
         "about the layer thickness). 'full': plain 2x2x2 Gauss integration "
         "(also locks under isochoric plastic flow; for comparison).");
       prm.declare_entry("Enhanced tolerance",
-                        "1e-10",
+                        "1e-6",
                         Patterns::Double(1e-16, 1e-3),
                         "Incompatible modes: the element's enhanced "
                         "parameters are iterated until the largest enhanced "
                         "residual is below this fraction of the largest "
-                        "nodal force of the element.");
+                        "nodal force of the element. The condensed residual "
+                        "is corrected by the remaining enhanced step, so its "
+                        "error is of the order of this tolerance squared.");
       prm.declare_entry("Enhanced iterations",
                         "25",
                         Patterns::Integer(1, 100),
