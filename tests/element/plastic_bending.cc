@@ -1,0 +1,279 @@
+// Elastoplastic pure bending of a strip in plane strain (doc/theory.md §3):
+// no locking, through-thickness integration, Newton order.
+//
+// Strip L = 24 mm, t = 0.81 mm, b = 1 mm (one element, uy = 0 on both
+// sides: plane strain), von Mises with the default Swift law; xmin held
+// (ux = uz = 0), xmax rotated as a plane by theta t, uz free, theta = 0.6:
+// curvature about 0.025 / mm, surface strain about 1 %, an
+// elastic core of about a fifth of the thickness. The xmax face is placed
+// where a circular arc of length L ends: ux = L (sin phi / phi - 1) + sin phi
+// (z - t/2), phi = theta t (series of sin phi / phi, exact to 1e-10 here);
+// holding its centre at x = L instead would stretch the strip by phi^2 / 6.
+//
+// Pure bending carries the same moment through every section, so the
+// moment on the xmax face, M = sum f_x (z - z_c) (current positions), is
+// compared at the curvature measured away from the held ends: the rotation
+// of the sections x0 = 6 and x0 = 18 mm over the arc between them (the
+// held xmin face disturbs about one thickness, all of a first 3 mm
+// element: on a 12 mm strip the coarse mesh measured 5 % lower moments).
+//
+// Reference (independent of the element): M(kappa) = b int sigma_xx z dz,
+// with sigma_xx(eps) of the plane-strain fibre (eps_yy = 0, sigma_zz = 0)
+// at the logarithmic strain eps = ln(1 + kappa z), integrated along the
+// monotonic path in 20 000 steps with the material's return mapping, and
+// through the thickness on 4 000 fibres (trapezoidal rule).
+//
+// Measured (incompatible modes, 2 / 4 / 8 layers):
+//   M(3 mm) / M(0.375 mm) = 0.986 / 1.006 / 1.007;
+//   |M(3 mm) / M_reference - 1| = 3.2 % / 2.9 % / 1.8 %;
+//   last increment: r = 7e-3, 2.9e-5, 9.5e-11, then round-off (1e-13):
+//   orders 2.1 and 2.2.
+// Asserted:
+// - no locking: with 3 mm elements the moment is within 2 % of the moment
+//   of 0.375 mm elements with the same layers;
+// - the error against the reference falls from 2 to 4 to 8 layers
+//   (2 x 2 x 2 Gauss points per layer sample the elastic-plastic stress);
+// - Newton converges quadratically in the last, plastic increment:
+//   log r_{k+1} / log r_k >= 1.8 over the iterations with r < 1e-2 (with
+//   the default enhanced tolerance 1e-6; 1e-12 gives the same iterates to
+//   three digits).
+#include "test_utilities.h"
+
+#include <deal.II/base/mpi.h>
+#include <deepdraw/material/hill_plasticity.h>
+#include <deepdraw/problem/forming_problem.h>
+#include <iomanip>
+#include <sstream>
+
+using namespace dealii;
+using namespace deepdraw;
+
+namespace
+{
+  const double length = 24., width = 1., thickness = 0.81, theta = 0.6;
+
+  const char *von_mises = "  set Hill F = 0.5\n  set Hill G = 0.5\n"
+                          "  set Hill H = 0.5\n  set Hill L = 1.5\n"
+                          "  set Hill M = 1.5\n  set Hill N = 1.5\n";
+
+  struct BendingResult
+  {
+    double              curvature;
+    double              moment;
+    std::vector<double> last_residuals;
+  };
+
+  BendingResult
+  bend(const double element_size, const unsigned int layers)
+  {
+    std::ostringstream prm_text;
+    prm_text << "subsection Geometry\n  set Length = " << length
+             << "\n  set Width = " << width
+             << "\n  set Thickness = " << thickness
+             << "\n  set Elements along x = "
+             << std::lround(length / element_size)
+             << "\n  set Elements along y = 1\n"
+                "  set Layers through thickness = "
+             << layers
+             << "\n  set Symmetry planes =\nend\n"
+                "subsection Material\n"
+             << von_mises
+             << "end\n"
+                "subsection Finite element\n  set Element = incompatible "
+                "modes\nend\n"
+                "subsection Boundary conditions\n"
+                "  set Prescribed displacements = ymin: uy = 0; ymax: uy = 0; "
+                "xmin: ux = 0; xmin: uz = 0; xmax: ux = "
+             << length << "*(-(" << theta << "*t)^2/6 + (" << theta
+             << "*t)^4/120 - (" << theta << "*t)^6/5040) + sin(" << theta
+             << "*t)*(z - " << thickness / 2.
+             << ")\nend\n"
+                "subsection Process\n  set Punch travel = 1\nend\n"
+                "subsection Load stepping\n  set Initial increment = 0.1\n"
+                "  set Maximum increment = 0.1\nend\n"
+                "subsection Newton\n  set Force tolerance = 1e-11\n"
+                "  set Correction tolerance = 1e-11\nend\n"
+                "subsection Output\n  set Output directory = bending-output\n"
+                "  set Write VTU = false\nend\n";
+    ParameterHandler prm;
+    problem::FormingProblem::declare_parameters(prm);
+    prm.parse_input_from_string(prm_text.str());
+    problem::FormingProblem forming_problem(prm);
+    forming_problem.run();
+    std::cout.precision(6); // run() leaves it at 3
+
+    const auto &X = forming_problem.get_initial_vertices();
+    const auto &u = forming_problem.get_total_displacement();
+    const auto &f = forming_problem.get_internal_force();
+    // Current position of the vertices on y = 0 by initial (x, z).
+    std::map<std::pair<long, long>, Point<3>> position;
+    std::vector<std::pair<double, Point<3>>>  end_face; // (f_x, x)
+    std::vector<bool>                         seen(X.size(), false);
+    for (const auto &cell :
+         forming_problem.get_dof_handler().active_cell_iterators())
+      for (const unsigned int v : cell->vertex_indices())
+      {
+        const unsigned int vertex = cell->vertex_index(v);
+        if (seen[vertex])
+          continue;
+        seen[vertex] = true;
+        Point<3> x   = X[vertex];
+        for (unsigned int c = 0; c < 3; ++c)
+          x[c] += u[cell->vertex_dof_index(v, c)];
+        if (std::abs(X[vertex][1]) < 1e-9)
+          position[{std::lround(X[vertex][0] * 1e3),
+                    std::lround(X[vertex][2] * 1e3)}]
+            = x;
+        if (std::abs(X[vertex][0] - length) < 1e-9)
+          end_face.emplace_back(f[cell->vertex_dof_index(v, 0)], x);
+      }
+    // Section rotation and mid-point at initial x0 (mm).
+    const auto section = [&](const double x0, Point<3> &middle)
+    {
+      const Point<3> &bottom = position.at({std::lround(x0 * 1e3), 0});
+      const Point<3> &top
+        = position.at({std::lround(x0 * 1e3), std::lround(thickness * 1e3)});
+      middle = 0.5 * (bottom + top);
+      return std::atan2(top[0] - bottom[0], top[2] - bottom[2]);
+    };
+    Point<3>     middle_a, middle_b;
+    const double rotation_a = section(6., middle_a);
+    const double rotation_b = section(18., middle_b);
+    const double angle      = rotation_b - rotation_a;
+    // Arc of a circle through the two mid-points with that angle.
+    const double arc
+      = middle_a.distance(middle_b) * (0.5 * angle) / std::sin(0.5 * angle);
+
+    double z_centre = 0., x_centre = 0.;
+    for (const auto &[fx, x] : end_face)
+    {
+      z_centre += x[2] / end_face.size();
+      x_centre += x[0] / end_face.size();
+    }
+    double moment = 0.;
+    for (const auto &[fx, x] : end_face)
+      moment += fx * (x[2] - z_centre);
+    return {angle / arc, moment, forming_problem.last_residuals()};
+  }
+
+
+  // sigma_xx of the plane-strain fibre along eps_xx = 0 -> eps_max, sampled
+  // every step: table[k] at eps = k * eps_max / n_steps.
+  std::vector<double>
+  fibre_stress_table(const double eps_max, const unsigned int n_steps)
+  {
+    ParameterHandler prm;
+    prm.enter_subsection("Material");
+    material::MaterialParameters::declare_parameters(prm);
+    prm.parse_input_from_string("set Hill F = 0.5\nset Hill G = 0.5\n"
+                                "set Hill H = 0.5\nset Hill L = 1.5\n"
+                                "set Hill M = 1.5\nset Hill N = 1.5\n");
+    material::MaterialParameters parameters;
+    parameters.parse_parameters(prm);
+    prm.leave_subsection();
+    const material::HillPlasticity material(parameters);
+
+    std::vector<double>          table(n_steps + 1, 0.);
+    material::MaterialPointState state, next;
+    SymmetricTensor<4, 3>        tangent;
+    for (unsigned int k = 1; k <= n_steps; ++k)
+    {
+      SymmetricTensor<2, 3> increment;
+      increment[0][0] = eps_max / n_steps;
+      bool plastic    = false;
+      // Newton on the thickness strain increment: sigma_zz = 0.
+      for (unsigned int iteration = 0; iteration < 20; ++iteration)
+      {
+        material.update(state, increment, next, tangent, plastic);
+        if (std::abs(next.stress[2][2]) < 1e-10)
+          break;
+        increment[2][2] -= next.stress[2][2] / tangent[2][2][2][2];
+      }
+      state    = next;
+      table[k] = state.stress[0][0];
+    }
+    return table;
+  }
+
+
+  // b int sigma_xx(ln(1 + kappa z)) z dz over the thickness.
+  double
+  reference_moment(const double kappa)
+  {
+    const double       eps_max = std::log(1. + kappa * thickness / 2.) * 1.001;
+    const unsigned int n_steps = 20000, n_fibres = 4000;
+    const std::vector<double> table  = fibre_stress_table(eps_max, n_steps);
+    const auto                stress = [&](const double eps)
+    {
+      const double s = std::abs(eps) / eps_max * n_steps;
+      const auto   k = std::min<unsigned int>(s, n_steps - 1);
+      const double value
+        = table[k] + (s - k) * (table[k + 1] - table[k]); // odd in eps
+      return eps < 0. ? -value : value;
+    };
+    double moment = 0.;
+    for (unsigned int i = 0; i <= n_fibres; ++i)
+    {
+      const double z = -thickness / 2. + thickness * i / n_fibres;
+      const double w
+        = (i == 0 || i == n_fibres ? 0.5 : 1.) * thickness / n_fibres;
+      moment += w * stress(std::log(1. + kappa * z)) * z;
+    }
+    return width * moment;
+  }
+} // namespace
+
+int
+main(int argc, char *argv[])
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  std::vector<double>              errors;
+  std::vector<std::string>         table;
+  for (const unsigned int layers : {2u, 4u, 8u})
+  {
+    const BendingResult coarse    = bend(3., layers);
+    const BendingResult fine      = bend(0.375, layers);
+    const double        reference = reference_moment(coarse.curvature);
+    const double        error     = std::abs(coarse.moment / reference - 1.);
+    errors.push_back(error);
+    std::ostringstream row;
+    row << std::setprecision(5) << layers << " layers: kappa "
+        << coarse.curvature << " / mm, M(3 mm) " << coarse.moment
+        << ", M(0.375 mm) " << fine.moment << " at kappa " << fine.curvature
+        << " (reference " << reference_moment(fine.curvature) << "), reference "
+        << reference << " N mm, error " << error;
+    table.push_back(row.str());
+    deepdraw_test::check_close("M(3 mm) / M(0.375 mm), "
+                                 + std::to_string(layers) + " layers",
+                               coarse.moment / fine.moment,
+                               1.,
+                               0.02);
+
+    if (layers == 2)
+    {
+      // Newton order of the last increment (plastic zone settled).
+      const std::vector<double> &r = coarse.last_residuals;
+      for (const double value : r)
+        std::cout << "  residual " << value << std::endl;
+      double       lowest_order = 10.;
+      unsigned int n_orders     = 0;
+      for (unsigned int k = 0; k + 1 < r.size(); ++k)
+        if (r[k] < 1e-2 && r[k + 1] > 1e-12) // round-off floor: 1e-13
+        {
+          lowest_order
+            = std::min(lowest_order, std::log(r[k + 1]) / std::log(r[k]));
+          ++n_orders;
+        }
+      deepdraw_test::check_true("Newton order measured on at least one step",
+                                n_orders > 0);
+      deepdraw_test::check_true("Newton order log r_k+1 / log r_k = "
+                                  + std::to_string(lowest_order) + " >= 1.8",
+                                lowest_order >= 1.8);
+    }
+  }
+  for (const std::string &row : table)
+    std::cout << row << std::endl;
+  deepdraw_test::check_true("error falls from 2 to 4 to 8 layers",
+                            errors[1] < errors[0] && errors[2] < errors[1]);
+  return deepdraw_test::summary();
+}
