@@ -63,9 +63,40 @@ main()
       res                       = law.evaluate(lambda, 0.2 * n, n, r);
       check_state("open, λ ≠ 0", res.state, ContactState::open);
       check_vector("open: F_sup = λ/r", res.constraint_residual, lambda / r);
-      // λ̂_N = 0 exactly counts as open.
-      res = law.evaluate(2. * n, 0.2 * n, n, r);
-      check_state("λ̂_N = 0", res.state, ContactState::open);
+      // At the kink λ̂_N = 0 the contact is active, only λ̂_N < 0 is open
+      // (decisions.md D17). The inputs make λ̂_N exactly 0: with r = 8 and
+      // ĝ = 0.25 λ/2 every product is a power-of-two scaling, so
+      // λ̂ = 2 n − 8 (0.25 n) = 0 component by component, without rounding
+      // (with r = 10, ĝ = 0.2 n it came out as about −2e-16, i.e. open).
+      {
+        const double r_kink = 8.;
+        res = law.evaluate(2. * n, 0.25 * n, n, r_kink);
+        check_true("λ̂_N = 0 exactly (inputs exact)",
+                   res.augmented_force * n == 0.
+                     && res.augmented_force.norm() == 0.);
+        check_state("λ̂_N = 0, λ̂_T = 0: active", res.state, ContactState::stick);
+        check_vector("λ̂_N = 0: P = 0", res.force, Tensor<1, 3>());
+        check_vector("λ̂_N = 0: F_sup = λ/r",
+                     res.constraint_residual,
+                     (2. / r_kink) * n);
+        // The active branch also in the Newton matrix: ∂P/∂λ = I (open: 0).
+        check_vector("λ̂_N = 0: ∂P/∂λ n = n (active branch)",
+                     Tensor<1, 3>(res.dforce_dmultiplier * n),
+                     n);
+        // With a tangential part (axis-aligned so λ̂_T is exact too):
+        // |λ̂_T| > μ λ̂_N = 0 gives slip, still active, P = λ̂_N (n + μ t) = 0.
+        const Tensor<1, 3> ez({0., 0., 1.});
+        const Tensor<1, 3> ex({1., 0., 0.});
+        res = law.evaluate(2. * ez + 0.5 * ex, 0.25 * ez, ez, r_kink);
+        check_true("λ̂_N = 0 exactly, λ̂_T = 0.5 e_x (inputs exact)",
+                   res.augmented_force * ez == 0.
+                     && res.augmented_force == 0.5 * ex);
+        check_state("λ̂_N = 0, λ̂_T ≠ 0: active", res.state, ContactState::slip);
+        check_vector("λ̂_N = 0, λ̂_T ≠ 0: P = 0", res.force, Tensor<1, 3>());
+        check_vector("λ̂_N = 0, λ̂_T ≠ 0: ∂P/∂λ n = n + μ t (active branch)",
+                     Tensor<1, 3>(res.dforce_dmultiplier * ez),
+                     ez + mu * ex);
+      }
 
       // Penetration 0.1, no friction demand: λ̂ = 1 n + 0.2 t, 0.2 <= 0.3.
       res = law.evaluate(Tensor<1, 3>(), -0.1 * n - 0.02 * t, n, r);
