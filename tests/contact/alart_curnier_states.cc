@@ -64,13 +64,13 @@ main()
       check_state("open, λ ≠ 0", res.state, ContactState::open);
       check_vector("open: F_sup = λ/r", res.constraint_residual, lambda / r);
       // At the kink λ̂_N = 0 the contact is active, only λ̂_N < 0 is open
-      // (decisions.md D17). The inputs make λ̂_N exactly 0: with r = 8 and
-      // ĝ = 0.25 λ/2 every product is a power-of-two scaling, so
+      // (decisions.md D17). The inputs make λ̂_N exactly 0: with r = 8,
+      // λ = 2 n, ĝ = 0.25 n every product is a power-of-two scaling, so
       // λ̂ = 2 n − 8 (0.25 n) = 0 component by component, without rounding
       // (with r = 10, ĝ = 0.2 n it came out as about −2e-16, i.e. open).
       {
         const double r_kink = 8.;
-        res = law.evaluate(2. * n, 0.25 * n, n, r_kink);
+        res                 = law.evaluate(2. * n, 0.25 * n, n, r_kink);
         check_true("λ̂_N = 0 exactly (inputs exact)",
                    res.augmented_force * n == 0.
                      && res.augmented_force.norm() == 0.);
