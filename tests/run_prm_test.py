@@ -3,7 +3,11 @@
 
 The prm file is run with deepdraw in a fresh work directory; its
 'Output directory' is overridden to <work-dir>/output so tests never write
-into the source tree. Then, in this order and if present next to the prm:
+into the source tree. With --source-dir, the work directory gets a link
+prm -> <source-dir>/prm, so that a test can `include prm/<shipped>.prm`
+(ParameterHandler opens include files relative to the working directory;
+the same line works when deepdraw is started from the repository root, as
+in doc/user_guide.md) and a broken shipped prm fails its tests. Then, in this order and if present next to the prm:
   <name>.expected_error  the run must fail (non-zero exit), its output must
                          contain every non-empty line of this file, and the
                          output directory must not have been created;
@@ -26,6 +30,9 @@ def main():
     parser.add_argument("--deepdraw", required=True)
     parser.add_argument("--prm", required=True)
     parser.add_argument("--work-dir", required=True)
+    parser.add_argument("--source-dir",
+                        help="repository root: its prm/ is linked into the "
+                             "work directory for `include prm/...`")
     parser.add_argument("--expected-error",
                         help="file with the expected error lines (default: "
                              "<name>.expected_error next to the prm)")
@@ -37,6 +44,9 @@ def main():
     if work.exists():
         shutil.rmtree(work)
     work.mkdir(parents=True)
+    if args.source_dir:
+        (work / "prm").symlink_to(pathlib.Path(args.source_dir).resolve() / "prm",
+                                  target_is_directory=True)
     output = work / "output"
 
     command = [args.deepdraw, str(prm), "--output-directory", str(output)]
