@@ -54,7 +54,7 @@ namespace deepdraw
         "about the layer thickness). 'full': plain 2x2x2 Gauss integration "
         "(also locks under isochoric plastic flow; for comparison).");
       prm.declare_entry("Enhanced tolerance",
-                        "1e-6",
+                        "1e-4",
                         Patterns::Double(1e-16, 1e-3),
                         "Incompatible modes: the element's enhanced "
                         "parameters are iterated until the largest enhanced "

@@ -28,7 +28,7 @@ namespace
            + integration
            // Enhanced parameters solved to round-off: the condensed
            // tangent is then the exact derivative (with the default 1e-6
-           // the condensed residual moves by O(1e-12) and K - K_fd is 2e-8).
+           // the error of K is of the order of that tolerance: 2e-8 at 1e-6).
            + "\n  set Enhanced tolerance = 1e-13\nend\n"
              "subsection Boundary conditions\n"
              "  set Prescribed displacements = zmin: uz = 0; ymin: uy = 0; "

@@ -45,7 +45,7 @@ namespace deepdraw
       // Local Newton of the enhanced parameters: converged when the
       // largest enhanced residual is below this fraction of the largest
       // nodal force of the element.
-      double       enhanced_tolerance      = 1e-6;
+      double       enhanced_tolerance      = 1e-4;
       unsigned int enhanced_max_iterations = 25;
 
       // Entries of `subsection Finite element` (the caller enters it).
