@@ -5,10 +5,13 @@ along the rolling direction 1): with the logarithmic strain e = 0.5 t,
     sigma = Y(epbar) / sqrt(G + H),  epbar = (e - sigma/E) / sqrt(G + H)
 (plastic-work equivalence: sigma de^p_11 = sigma_bar d epbar), and the current
 section A = A0 exp(-e + (1 - 2 nu) sigma / E). The force on the quarter model
-(A0 = 1 mm^2) must match within 1 % (the tolerance of the issue; the
-homogeneous field is represented exactly, what remains is the time
-integration of the hypoelastic law). Also: Newton converges quadratically on
-plastic increments.
+(A0 = 1 mm^2) must match within TOLERANCE = 3e-5 relative: the homogeneous
+field is represented exactly, what remains is the time integration of the
+hypoelastic law, measured 9.7e-6 at most (strain 0.125; increments 0.02 to
+0.05 of prm/tension_bar.prm, the same for UMFPACK, KLU and MUMPS) and
+1.3e-7 with increments of 0.005, so 3e-5 is 3 times what is achieved (the
+issue's 1 % would have hidden a thousand times the error). Also: Newton
+converges quadratically on plastic increments.
 """
 import csv
 import math
@@ -18,6 +21,7 @@ E, NU = 71000.0, 0.33
 G, H = 0.5848, 0.4152
 C, EPS0, N = 576.79, 0.01658, 0.3593
 A0 = 1.0
+TOLERANCE = 3e-5  # 3 x the largest error measured, 9.7e-6 (see above)
 
 
 def closed_form_force(strain):
@@ -51,7 +55,7 @@ def main(output):
         force = float(row["xmax_Fx"])
         expected = closed_form_force(strain)
         error = abs(force - expected) / expected
-        ok = error <= 0.01
+        ok = error <= TOLERANCE
         failures += not ok
         checked += 1
         print("%s strain %.3f force %.4f closed form %.4f rel. error %.2e"
