@@ -17,11 +17,15 @@
 // zero over any cell (Taylor's correction): r_alpha = P : int G~ dV = 0 at
 // alpha = 0.
 //
+// Then a rigid rotation: the stressed, distorted patch turned by 90 degrees
+// in ten increments must carry its stress along, sigma -> R sigma R^T.
+//
 // Two cases: an elastic one (|A| = 1e-4), also compared with small-strain
 // Hooke's law, and a plastic one with 10 % strains and a rotation, where the
 // SRI and full stresses must coincide too (the SRI correction is zero).
 #include "test_utilities.h"
 
+#include <array>
 #include <deal.II/base/mpi.h>
 #include <deepdraw/problem/forming_problem.h>
 #include <sstream>
@@ -31,19 +35,35 @@ using namespace deepdraw;
 
 namespace
 {
+  // "t*(A X)_i" for u_x, u_y, u_z.
+  std::array<std::string, 3>
+  affine_displacement(const Tensor<2, 3> &A)
+  {
+    std::array<std::string, 3> u;
+    for (unsigned int i = 0; i < 3; ++i)
+    {
+      std::ostringstream expression;
+      expression.precision(17);
+      expression << "t*(" << A[i][0] << "*x + " << A[i][1] << "*y + " << A[i][2]
+                 << "*z)";
+      u[i] = expression.str();
+    }
+    return u;
+  }
+
+  // The displacement u prescribed on all six faces of the unit cube.
   std::string
-  prm_text(const Tensor<2, 3> &A,
-           const std::string  &integration,
-           const double        increment)
+  prm_text(const std::array<std::string, 3> &u,
+           const std::string                &integration,
+           const double                      increment,
+           const double                      final_load = 1.)
   {
     const char *faces[6] = {"xmin", "xmax", "ymin", "ymax", "zmin", "zmax"};
     const char *components[3] = {"ux", "uy", "uz"};
     std::ostringstream bc;
-    bc.precision(17);
     for (const char *face : faces)
       for (unsigned int i = 0; i < 3; ++i)
-        bc << face << ": " << components[i] << " = t*(" << A[i][0] << "*x + "
-           << A[i][1] << "*y + " << A[i][2] << "*z); ";
+        bc << face << ": " << components[i] << " = " << u[i] << "; ";
     std::string conditions = bc.str();
     conditions.erase(conditions.size() - 2);
 
@@ -59,7 +79,9 @@ namespace
              "  set Prescribed displacements = "
            + conditions
            + "\nend\n"
-             "subsection Process\n  set Punch travel = 1\nend\n"
+             "subsection Process\n  set Punch travel = "
+           + std::to_string(final_load)
+           + "\nend\n"
              "subsection Load stepping\n"
              "  set Initial increment = "
            + std::to_string(increment)
@@ -88,7 +110,8 @@ namespace
     std::cout << integration << " integration, |A| = " << A.norm() << std::endl;
     ParameterHandler prm;
     problem::FormingProblem::declare_parameters(prm);
-    prm.parse_input_from_string(prm_text(A, integration, increment));
+    prm.parse_input_from_string(
+      prm_text(affine_displacement(A), integration, increment));
     problem::FormingProblem forming_problem(prm);
     forming_problem.run();
     std::cout.precision(6); // run() leaves it at 3
@@ -157,6 +180,27 @@ namespace
                    point.state.equivalent_plastic_strain);
     }
     return result;
+  }
+
+  // Cell-average Cauchy stresses after stretching the cube by 1e-3 along x
+  // (t <= 0.5) and then turning it rigidly by 90 degrees about z in ten
+  // increments (t = 0.5 ... 1), or after the stretch only.
+  std::vector<Tensor<2, 3>>
+  stretch_and_turn(const std::string &integration, const double final_load)
+  {
+    const std::string                stretch = "(1 + 1e-3*(t<0.5 ? 2*t : 1))";
+    const std::string                angle   = "(t<0.5 ? 0 : (t-0.5)*3.14159265358979324)";
+    const std::array<std::string, 3> u
+      = {{stretch + "*x*cos" + angle + " - y*sin" + angle + " - x",
+          stretch + "*x*sin" + angle + " + y*cos" + angle + " - y",
+          "0"}};
+    ParameterHandler prm;
+    problem::FormingProblem::declare_parameters(prm);
+    prm.parse_input_from_string(prm_text(u, integration, 0.05, final_load));
+    problem::FormingProblem forming_problem(prm);
+    forming_problem.run();
+    std::cout.precision(6); // run() leaves it at 3
+    return forming_problem.cell_average_cauchy_stress();
   }
 } // namespace
 
@@ -231,5 +275,33 @@ main(int argc, char *argv[])
       / stress_by_integration[0].norm(),
     0.,
     1e-10);
+
+  // Rigid rotation of a stressed, distorted patch: the Hughes-Winget
+  // rotation of a rigid increment is the increment's rotation exactly (the
+  // Cayley transform of its own inverse), so the stress turns with the
+  // body to round-off, sigma(1) = R sigma(0.5) R^T, R = 90 degrees about z.
+  Tensor<2, 3> R;
+  R[0][1] = -1.;
+  R[1][0] = 1.;
+  R[2][2] = 1.;
+  for (const std::string integration :
+       {"incompatible modes", "selective reduced", "full"})
+  {
+    std::cout << integration << ": stretch, then a rigid turn" << std::endl;
+    const std::vector<Tensor<2, 3>> stretched
+      = stretch_and_turn(integration, 0.5);
+    const std::vector<Tensor<2, 3>> turned = stretch_and_turn(integration, 1.);
+    double                          error  = 0.;
+    for (unsigned int cell = 0; cell < turned.size(); ++cell)
+      error
+        = std::max(error,
+                   (turned[cell] - R * stretched[cell] * transpose(R)).norm()
+                     / stretched[cell].norm());
+    deepdraw_test::check_close(
+      "max |sigma(1) - R sigma(0.5) R^T| / |sigma(0.5)|",
+      error,
+      0.,
+      1e-9);
+  }
   return deepdraw_test::summary();
 }
