@@ -22,14 +22,20 @@
 //    within one element h of a;
 //  - peak pressure: the nodal force at x = 0 over its tributary area
 //    (h/2 x width/2 per node: symmetry plane and block edge).
-// Tolerance 10 % (issue): the block is finite (5 x 5 mm, a ~ 1 mm, on a
-// frictionless support; the half-space result is approached to a few %),
-// the mesh has h = a/10 and the nodal pressure at the peak is a
-// hat-weighted average of p over [0, h] (-0.2 %); strains ~ a/(2R) = 1 %
-// add O(1 %) geometric nonlinearity of the updated-Lagrangian solution.
-// Also: all contact force is normal (frictionless): |friction| ~ 0; the
-// sum of nodal normal forces equals the tool force along z to 1e-3
-// (the normals tilt by x/R <= 2 %, so |P_z| = |P| (1 - O(x^2/R^2))).
+// Tolerance 1 % for a and p0 (the issue allowed 10 %): measured 0.44 %
+// (a from the second moment) and 0.31 % (p0), so about 2.5 and 3 times
+// what is reached. The deviations have known sources of that size: the
+// block is finite (5 x 5 mm, a ~ 1 mm, on a frictionless support), the
+// mesh has h = a/10 (second-moment bias h^2/(4 a^2) ~ 0.3 %), the nodal
+// pressure at the peak is a hat-weighted average of p over [0, h]
+// (-0.2 %), and strains ~ a/(2R) = 1 % add geometric nonlinearity.
+// Also: all contact force is normal (frictionless): |friction| ~ 0. The
+// normals tilt by x/R <= 2 %: the sum of the nodal normal forces exceeds
+// the tool force along z by the mean of x^2/(2R^2), measured 4.2e-5,
+// asserted to 1e-4; summed with cos(theta), sin(theta) = x/R at the
+// node's current x, it equals the tool force to round-off (measured
+// 1.4e-16, asserted 1e-12): the contact normals are radial through the
+// nodes.
 #include "forming_test_tools.h"
 
 #include <deal.II/base/mpi.h>
@@ -70,11 +76,15 @@ main(int argc, char *argv[])
     columns[i].second += nodal[v].normal_force;
     max_friction = std::max(max_friction, nodal[v].friction_force.norm());
   }
-  double sum_f = 0., sum_fx2 = 0., f_max = 0., x_last = 0.;
+  double sum_f = 0., sum_fx2 = 0., sum_fz = 0., f_max = 0., x_last = 0.;
   for (const auto &[i, column] : columns)
   {
     sum_f += column.second;
     sum_fx2 += column.second * column.first * column.first;
+    // z component of a normal force at x on the cylinder: cos(theta),
+    // sin(theta) = x / R.
+    sum_fz
+      += column.second * std::sqrt(1. - column.first * column.first / (R * R));
     f_max = std::max(f_max, column.second);
   }
   for (const auto &[i, column] : columns)
@@ -103,12 +113,16 @@ main(int argc, char *argv[])
   check_relative("sum of nodal normal forces vs tool Fz",
                  sum_f,
                  -tool_force[2],
-                 1e-3);
+                 1e-4);
+  check_relative("sum of z components of the nodal normal forces vs tool Fz",
+                 sum_fz,
+                 -tool_force[2],
+                 1e-12);
   check_true("contact half-width around 1 mm (a/R = 2 %, a/h = 10)",
              a > 0.7 && a < 1.3);
-  check_relative("half-width from the second moment vs Hertz a", a_h, a, 0.1);
+  check_relative("half-width from the second moment vs Hertz a", a_h, a, 1e-2);
   check_close("last node in contact vs Hertz a (one element)", x_last, a, h);
-  check_relative("peak pressure p(0) vs Hertz p0", p0_h, p0, 0.1);
+  check_relative("peak pressure p(0) vs Hertz p0", p0_h, p0, 1e-2);
   check_close("max |friction force| (frictionless)",
               max_friction,
               0.,
