@@ -1,4 +1,5 @@
 #include <cmath>
+#include <deal.II/base/numbers.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/material/material_parameters.h>
@@ -97,24 +98,34 @@ namespace deepdraw
                         Double(0., inf),
                         "k of the Prager kinematic hardening dX = k "
                         "d(eps^p), in MPa (>= 0; 0 switches it off).");
+      prm.declare_entry("Rolling direction angle",
+                        to_string(d.rolling_direction_angle),
+                        Double(-180., 180.),
+                        "Angle from the global x axis (the blank's length) "
+                        "to the rolling direction (Hill axis 1), "
+                        "counterclockwise about the sheet normal z, in "
+                        "degrees (-180 to 180): the initial material axes "
+                        "are this rotation about z. 0: rolling direction = "
+                        "x; 90: rolling direction = y.");
     }
 
 
     void
     MaterialParameters::parse_parameters(dealii::ParameterHandler &prm)
     {
-      youngs_modulus    = prm.get_double("Young's modulus");
-      poissons_ratio    = prm.get_double("Poisson's ratio");
-      hill_F            = prm.get_double("Hill F");
-      hill_G            = prm.get_double("Hill G");
-      hill_H            = prm.get_double("Hill H");
-      hill_L            = prm.get_double("Hill L");
-      hill_M            = prm.get_double("Hill M");
-      hill_N            = prm.get_double("Hill N");
-      swift_coefficient = prm.get_double("Swift coefficient");
-      swift_prestrain   = prm.get_double("Swift prestrain");
-      swift_exponent    = prm.get_double("Swift exponent");
-      prager_modulus    = prm.get_double("Prager modulus");
+      youngs_modulus          = prm.get_double("Young's modulus");
+      poissons_ratio          = prm.get_double("Poisson's ratio");
+      hill_F                  = prm.get_double("Hill F");
+      hill_G                  = prm.get_double("Hill G");
+      hill_H                  = prm.get_double("Hill H");
+      hill_L                  = prm.get_double("Hill L");
+      hill_M                  = prm.get_double("Hill M");
+      hill_N                  = prm.get_double("Hill N");
+      swift_coefficient       = prm.get_double("Swift coefficient");
+      swift_prestrain         = prm.get_double("Swift prestrain");
+      swift_exponent          = prm.get_double("Swift exponent");
+      prager_modulus          = prm.get_double("Prager modulus");
+      rolling_direction_angle = prm.get_double("Rolling direction angle");
       validate();
     }
 
@@ -171,6 +182,32 @@ namespace deepdraw
               "Prager modulus",
               prager_modulus,
               "k >= 0 (MPa)");
+      require(rolling_direction_angle >= -180.
+                && rolling_direction_angle <= 180.,
+              "Rolling direction angle",
+              rolling_direction_angle,
+              "-180 to 180 (degrees)");
+    }
+
+
+    dealii::Tensor<2, 3>
+    MaterialParameters::initial_material_axes() const
+    {
+      const double angle = rolling_direction_angle * dealii::numbers::PI / 180.;
+      double       c = std::cos(angle), s = std::sin(angle);
+      // cos(90 degrees) is 6e-17, not 0: quarter turns are made exact, so
+      // that the default 0 gives R0 = I and 90 the exact swap of x and y.
+      if (std::abs(c) < 1e-15)
+        c = 0.;
+      if (std::abs(s) < 1e-15)
+        s = 0.;
+      dealii::Tensor<2, 3> R;
+      R[0][0] = c;
+      R[1][0] = s;
+      R[0][1] = -s;
+      R[1][1] = c;
+      R[2][2] = 1.;
+      return R;
     }
   } // namespace material
 } // namespace deepdraw

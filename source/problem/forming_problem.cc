@@ -199,8 +199,12 @@ namespace deepdraw
       displacement_increment.reinit(n_unknowns);
       converged_solution.reinit(n_unknowns);
 
+      // Initial state: unstressed, material axes rotated about z by
+      // Material/Rolling direction angle.
+      QuadraturePointHistory initial_point;
+      initial_point.material_axes = material_parameters.initial_material_axes();
       history.assign(triangulation.n_active_cells() * fe::n_weighted_points,
-                     QuadraturePointHistory());
+                     initial_point);
       trial_history = history;
       enhanced_parameters.assign(
         fe::n_enhanced_parameters(element_parameters.technology) > 0

@@ -62,7 +62,7 @@ main()
                                0.3593,
                                0.);
   }
-  // All twelve entries are read.
+  // All thirteen entries are read.
   {
     MaterialParameters parameters;
     const std::string  body
@@ -70,7 +70,8 @@ main()
         "set Hill F = 0.1\nset Hill G = 0.2\nset Hill H = 0.3\n"
         "set Hill L = 1.1\nset Hill M = 1.2\nset Hill N = 1.3\n"
         "set Swift coefficient = 500\nset Swift prestrain = 0.02\n"
-        "set Swift exponent = 0.25\nset Prager modulus = 1000";
+        "set Swift exponent = 0.25\nset Prager modulus = 1000\n"
+        "set Rolling direction angle = 30";
     deepdraw_test::check_true("custom values parse",
                               parse(body, parameters).empty());
     const double read[] = {parameters.youngs_modulus,
@@ -84,10 +85,11 @@ main()
                            parameters.swift_coefficient,
                            parameters.swift_prestrain,
                            parameters.swift_exponent,
-                           parameters.prager_modulus};
+                           parameters.prager_modulus,
+                           parameters.rolling_direction_angle};
     const double expected[]
-      = {210000, 0.3, 0.1, 0.2, 0.3, 1.1, 1.2, 1.3, 500, 0.02, 0.25, 1000};
-    for (unsigned int i = 0; i < 12; ++i)
+      = {210000, 0.3, 0.1, 0.2, 0.3, 1.1, 1.2, 1.3, 500, 0.02, 0.25, 1000, 30};
+    for (unsigned int i = 0; i < 13; ++i)
       deepdraw_test::check_close("entry " + std::to_string(i),
                                  read[i],
                                  expected[i],
@@ -118,6 +120,40 @@ main()
                                      != std::string::npos);
   }
 
+  // The initial material axes: rotation about z by the rolling direction
+  // angle; exact for the default 0 (R0 = I) and for 90 (x and y swapped).
+  {
+    MaterialParameters parameters;
+    const auto         R0 = parameters.initial_material_axes();
+    deepdraw_test::check_true(
+      "angle 0: R0 = I exactly",
+      R0 == dealii::Tensor<2, 3>(dealii::unit_symmetric_tensor<3>()));
+    parameters.rolling_direction_angle = 90.;
+    const auto R90                     = parameters.initial_material_axes();
+    deepdraw_test::check_true("angle 90: rolling direction = y exactly",
+                              R90[0][0] == 0. && R90[1][0] == 1.
+                                && R90[2][0] == 0. && R90[0][1] == -1.
+                                && R90[2][2] == 1.);
+    parameters.rolling_direction_angle = 30.;
+    const auto R30                     = parameters.initial_material_axes();
+    deepdraw_test::check_close("angle 30: rolling direction (cos 30, sin 30)",
+                               std::abs(R30[0][0] - std::sqrt(3.) / 2.)
+                                 + std::abs(R30[1][0] - 0.5),
+                               0.,
+                               1e-15);
+    deepdraw_test::check_close("angle 30: R^T R = I",
+                               (transpose(R30) * R30
+                                - dealii::Tensor<2, 3>(
+                                  dealii::unit_symmetric_tensor<3>()))
+                                 .norm(),
+                               0.,
+                               1e-15);
+    deepdraw_test::check_close("angle 30: det R = 1",
+                               determinant(R30),
+                               1.,
+                               1e-15);
+  }
+
   // Values outside a Pattern are refused by ParameterHandler itself.
   {
     MaterialParameters parameters;
@@ -131,6 +167,16 @@ main()
       refused = true;
     }
     deepdraw_test::check_true("Hill G = -0.1 refused by its Pattern", refused);
+    refused = false;
+    try
+    {
+      parse("set Rolling direction angle = 200", parameters);
+    }
+    catch (const dealii::ExceptionBase &)
+    {
+      refused = true;
+    }
+    deepdraw_test::check_true("Rolling direction angle = 200 refused", refused);
   }
 
   // Parameters set in code are validated by the HillPlasticity constructor.

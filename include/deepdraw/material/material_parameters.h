@@ -4,6 +4,8 @@
 #ifndef deepdraw_material_material_parameters_h
 #define deepdraw_material_material_parameters_h
 
+#include <deal.II/base/tensor.h>
+
 namespace dealii
 {
   class ParameterHandler;
@@ -31,6 +33,13 @@ namespace deepdraw
       // Prager linear kinematic hardening dX = k d(eps^p), MPa; 0 = off.
       double prager_modulus = 0.;
 
+      // Angle from the global x axis to the rolling direction (axis 1),
+      // counterclockwise about the sheet normal z, in degrees: the initial
+      // material axes are R0 = rotation about z by this angle (0: R0 = I,
+      // rolling direction = x). Not used by HillPlasticity, which works in
+      // the material frame; the forming problem sets the history with it.
+      double rolling_direction_angle = 0.;
+
       // Declares the entries inside the *current* subsection (the caller
       // enters "Material").
       static void
@@ -39,6 +48,12 @@ namespace deepdraw
       // Reads the entries from the current subsection, then validate().
       void
       parse_parameters(dealii::ParameterHandler &prm);
+
+      // The initial material axes: columns rolling, transverse, normal
+      // direction in global coordinates (rotation by
+      // rolling_direction_angle about z).
+      dealii::Tensor<2, 3>
+      initial_material_axes() const;
 
       // Checks what a Pattern cannot (E > 0, -1 < nu < 1/2, C > 0, eps0 > 0,
       // 0 <= n < 1, F, G, H >= 0 with pairwise sums > 0, L, M, N > 0).
