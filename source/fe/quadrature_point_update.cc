@@ -58,8 +58,8 @@ namespace deepdraw
       //   e_n).
       // With Q = A^{-1} (I + dW/2), A = I - dW/2: I + Q = 2 A^{-1}, hence
       //   dR = dQ R_n = A^{-1} dW A^{-1} R_n, dR_half = 1/2 A_h^{-1} dW
-      //   A_h^{-1} R_n (A_h = I - dW/4), the Cayley-transform derivative of
-      // HughesWingetIncrement::variation written without its (I + Q) factor.
+      //   A_h^{-1} R_n (A_h = I - dW/4): the Cayley-transform derivative
+      // dQ = A^{-1} (d dW / 2) (I + Q) written without its (I + Q) factor.
       const Tensor<2, 3> identity = unit_symmetric_tensor<3>();
       const Tensor<2, 3> F_half_inv
         = identity - 0.5 * increment.velocity_gradient_increment;

@@ -243,24 +243,6 @@ namespace deepdraw::geometry
   }
 
 
-  void
-  RigidTool::set_translation_law(
-    const std::function<dealii::Tensor<1, 3>(double)> &translation_law)
-  {
-    translation_of_load = translation_law;
-  }
-
-
-  void
-  RigidTool::move_to(const double load_parameter)
-  {
-    AssertThrow(static_cast<bool>(translation_of_load),
-                dealii::ExcMessage("Tool '" + tool_name
-                                   + "' has no translation law"));
-    set_rigid_motion(rotation_matrix, translation_of_load(load_parameter));
-  }
-
-
   dealii::Point<3>
   RigidTool::to_global(const dealii::Point<3> &point_in_tool_frame) const
   {

@@ -480,10 +480,6 @@ namespace deepdraw::geometry
     tools.push_back(assemble("punch", punch, P.full_model));
     tools.push_back(assemble("die", die, P.full_model));
     tools.push_back(assemble("blank holder", holder, P.full_model));
-    tools[0].set_translation_law([](const double travel)
-                                 { return vector(0., 0., -travel); });
-    tools[1].set_translation_law([](double) { return Vector(); });
-    tools[2].set_translation_law([](double) { return Vector(); });
     return tools;
   }
 } // namespace deepdraw::geometry

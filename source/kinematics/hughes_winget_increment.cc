@@ -34,28 +34,5 @@ namespace deepdraw
       half_rotation  = inverse_a_half * (identity + 0.25 * spin_increment);
       return true;
     }
-
-
-    void
-    HughesWingetIncrement::variation(const Tensor<2, 3> &dH,
-                                     Tensor<2, 3>       &d_strain_increment,
-                                     Tensor<2, 3>       &d_spin_increment,
-                                     Tensor<2, 3>       &d_rotation,
-                                     Tensor<2, 3>       &d_half_rotation) const
-    {
-      const Tensor<2, 3> identity = unit_symmetric_tensor<3>();
-      // d(dL) = (I - dL/2) dH F_half^{-1}
-      const Tensor<2, 3> d_velocity_gradient
-        = (identity - 0.5 * velocity_gradient_increment) * dH
-          * inverse_half_deformation_gradient;
-      d_strain_increment
-        = 0.5 * (d_velocity_gradient + transpose(d_velocity_gradient));
-      d_spin_increment
-        = 0.5 * (d_velocity_gradient - transpose(d_velocity_gradient));
-      // dQ = A^{-1} (d dW / 2) (I + Q), A = I - dW/2
-      d_rotation = 0.5 * inverse_a * d_spin_increment * (identity + rotation);
-      d_half_rotation
-        = 0.25 * inverse_a_half * d_spin_increment * (identity + half_rotation);
-    }
   } // namespace kinematics
 } // namespace deepdraw

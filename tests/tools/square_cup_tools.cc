@@ -5,6 +5,7 @@
 #include "test_utilities.h"
 
 #include <cmath>
+#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deepdraw/geometry/square_cup_tools.h>
 #include <deepdraw/io/input_error.h>
@@ -407,7 +408,8 @@ main()
 
   // Motion: punch travel 5 mm moves the face to z = t - 5.
   {
-    tools[0].move_to(5.);
+    tools[0].set_rigid_motion(dealii::unit_symmetric_tensor<3>(),
+                              dealii::Tensor<1, 3>({0., 0., -5.}));
     ProjectionResult r;
     tools[0].project(Point<3>(3, 4, -10), r, 20.);
     check_close("punch after 5 mm travel: foot z",

@@ -2,6 +2,8 @@
 // placement, unit normals.
 #include "test_utilities.h"
 
+#include <deal.II/base/symmetric_tensor.h>
+
 #include <cmath>
 #include <deepdraw/geometry/square_cup_tools.h>
 #include <deepdraw/geometry/tool_vtu.h>
@@ -38,7 +40,9 @@ int
 main()
 {
   auto tools = build_square_cup_tools(SquareCupToolParameters(), 0.81);
-  tools[0].move_to(12.5); // the punch 12.5 mm down
+  // The punch 12.5 mm down.
+  tools[0].set_rigid_motion(dealii::unit_symmetric_tensor<3>(),
+                            dealii::Tensor<1, 3>({0., 0., -12.5}));
   const std::string filename
     = (std::filesystem::temp_directory_path()
        / ("deepdraw_punch_" + std::to_string(::getpid()) + ".vtu"))

@@ -81,14 +81,6 @@ namespace deepdraw::geometry
     const dealii::Tensor<1, 3> &
     translation() const;
 
-    // Translation as a function of the load parameter (e.g. punch travel),
-    // applied by move_to() with the current rotation.
-    void
-    set_translation_law(
-      const std::function<dealii::Tensor<1, 3>(double)> &translation_law);
-    void
-    move_to(double load_parameter);
-
     dealii::Point<3>
     to_global(const dealii::Point<3> &point_in_tool_frame) const;
     dealii::Point<3>
@@ -135,7 +127,6 @@ namespace deepdraw::geometry
     dealii::Tensor<2, 3>                        rotation_matrix;
     dealii::Tensor<1, 3>                        translation_vector;
     bool                                        is_identity_rotation = true;
-    std::function<dealii::Tensor<1, 3>(double)> translation_of_load;
     dealii::BoundingBox<3>                      current_box;
   };
 } // namespace deepdraw::geometry

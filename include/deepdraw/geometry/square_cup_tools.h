@@ -48,9 +48,9 @@ namespace deepdraw::geometry
   };
 
   // Returns {punch, die, blank holder} (names "punch", "die", "blank holder")
-  // at their initial placement. Load parameter of move_to() = punch travel:
-  // the punch translates by (0, 0, -travel), die and blank holder stay (the
-  // solver places the blank holder with set_rigid_motion()).
+  // at their initial placement; their motion is the tool slots' business
+  // (Contact/Tool N/Translation, or the force-controlled position), applied
+  // with RigidTool::set_rigid_motion().
   std::vector<RigidTool>
   build_square_cup_tools(const SquareCupToolParameters &parameters,
                          double                         sheet_thickness);

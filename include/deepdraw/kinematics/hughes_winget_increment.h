@@ -4,9 +4,8 @@
 // strain increment d_eps = sym dL, the spin increment dW = skew dL and the
 // Hughes-Winget rotation Q = (I - dW/2)^{-1} (I + dW/2), the half-step
 // rotation Q_half = (I - dW/4)^{-1} (I + dW/4) that carries the material
-// axes to the mid-increment configuration where d_eps is measured, plus the
-// directional derivative of all of them along a variation dH, which the
-// consistent tangent needs.
+// axes to the mid-increment configuration where d_eps is measured (their
+// derivatives are taken in fe/quadrature_point_update.cc, doc/theory.md §4).
 #ifndef deepdraw_kinematics_hughes_winget_increment_h
 #define deepdraw_kinematics_hughes_winget_increment_h
 
@@ -26,14 +25,6 @@ namespace deepdraw
       // (an inverted element: the caller cuts the increment).
       bool
       reinit(const Tensor<2, 3> &displacement_increment_gradient);
-
-      // Variation of d_eps, dW, Q and Q_half for a variation dH of H.
-      void
-      variation(const Tensor<2, 3> &dH,
-                Tensor<2, 3>       &d_strain_increment,
-                Tensor<2, 3>       &d_spin_increment,
-                Tensor<2, 3>       &d_rotation,
-                Tensor<2, 3>       &d_half_rotation) const;
 
       Tensor<2, 3>          H;
       Tensor<2, 3>          deformation_gradient; // F = I + H
