@@ -105,10 +105,14 @@ namespace deepdraw
 
       // Adds the contact contributions for the current iterate:
       // `positions` are the vertex positions at t (start of increment),
-      // `solution` holds du (displacement part), lambda and z. Adds -r to
-      // rhs and dr/dx to the matrix (if matrix != nullptr) through the
-      // constraints; adds the contact forces P to contact_force (by u dof).
-      // Returns the number of pairs whose state changed since the last call.
+      // `solution` holds du (displacement part), lambda and z; the
+      // force-controlled tools are first placed at their z. Adds -r to rhs
+      // (displacement rows P, multiplier rows -F_sup, tool rows
+      // F(new_load) - a.P) and dr/dx to the matrix (if matrix != nullptr)
+      // through the constraints. The contact forces are kept in the pairs
+      // (tool_forces(), nodal_contact()), not returned in a vector.
+      // Returns the number of pairs whose state (open / stick / slip, or
+      // found by the search) changed since the last call.
       // With predictor = true (the tangent predictor of the increment) the
       // pairs that were open at the last converged state stay open: the
       // predictor linearises at that state (reference Eq. 13).
