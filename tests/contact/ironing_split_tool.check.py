@@ -8,10 +8,13 @@ after the first one (which still builds up the elastic shear of the block):
   * no spike: |F_{k+1} - F_k| <= 1e-6 |F|_mean for each component x, z.
     Justification: the Newton tolerance is 1e-10 relative; a gap jump of
     delta at one junction would change a nodal force by about r delta with
-    r = E h = 17750 N/mm, so 1e-6 |F| = 1.5e-4 N detects jumps of ~1e-8 mm;
+    r = E h = 25100 N/mm (h = sqrt(0.25 x 0.5) mm, the automatic r of
+    theory_contact.md §5, one for all pairs), so 1e-6 |F| = 1.5e-4 N
+    detects jumps of ~6e-9 mm [measured jumps: 3.9e-8 |F|];
   * Coulomb: F_x = mu |F_z| (every pair slips along +x): 1e-6 relative;
   * every top node really crossed junctions: its tool-frame x runs from X
-    down to X - (tool travel), which must contain at least one junction.
+    down to X - (tool travel), which must contain at least three junctions
+    (as the prm says; measured 3 to 4 per top node column).
 """
 import csv
 import sys
@@ -51,7 +54,7 @@ def main(output):
     print("%s Fx = mu |Fz|: max relative error %.2e" % ("ok  " if ok else "FAIL", worst))
     travel = float(tools[steady[-1]]["ironing_ux"])
     crossings = [sum(1 for j in JUNCTIONS if x - travel < j < x) for x in TOP_X]
-    ok = min(crossings) >= 1
+    ok = min(crossings) >= 3
     failures += not ok
     print("%s tool travel %.4g mm; junctions crossed per top node column: %s"
           % ("ok  " if ok else "FAIL", travel, crossings))
