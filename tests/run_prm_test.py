@@ -38,7 +38,8 @@ def main():
                              "<name>.expected_error next to the prm)")
     args = parser.parse_args()
 
-    prm = pathlib.Path(args.prm)
+    # Absolute: deepdraw runs in the work directory.
+    prm = pathlib.Path(args.prm).resolve()
     stem = prm.with_suffix("")
     work = pathlib.Path(args.work_dir)
     if work.exists():
