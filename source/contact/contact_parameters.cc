@@ -39,9 +39,10 @@ namespace deepdraw
         "0",
         dealii::Patterns::Double(),
         "Augmentation parameter r of the Alart-Curnier law, in N/mm; a "
-        "number >= 0. 0 selects the automatic value per node, "
-        "r = (Augmentation scaling) x E x (element size). The converged "
-        "solution does not depend on r, only the Newton convergence does.");
+        "number >= 0. 0 selects the automatic value, one for all contact "
+        "pairs: r = (Augmentation scaling) x E x h, h = sqrt(dx dy) the "
+        "in-plane size of the blank's elements. The converged solution does "
+        "not depend on r, only the Newton convergence does.");
       prm.declare_entry("Augmentation scaling",
                         "1",
                         dealii::Patterns::Double(),

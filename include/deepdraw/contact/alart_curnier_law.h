@@ -54,7 +54,8 @@ namespace deepdraw
     // Coulomb friction with coefficient μ >= 0 in the Alart–Curnier form:
     //   λ̂ = λ − r ĝ,  P_N = max(0, λ̂_N),
     //   P_T = λ̂_T if |λ̂_T| <= μ P_N, else μ P_N λ̂_T/|λ̂_T|.
-    // The augmentation r > 0 is passed per call: it is scaled per node.
+    // The augmentation r > 0 is passed per call (the forming problem uses
+    // one r for all pairs, ContactParameters::augmentation).
     class AlartCurnierLaw
     {
     public:

@@ -14,7 +14,7 @@ namespace deepdraw
     {
       // Coulomb coefficient μ, on all tools (NUMISHEET'93: 0.162).
       double friction_coefficient = 0.162;
-      // r in N/mm; 0 selects the automatic, per-node value.
+      // r in N/mm; 0 selects the automatic value (one for all pairs).
       double augmentation_parameter = 0;
       // Factor on the automatic r.
       double augmentation_scaling = 1;
@@ -30,10 +30,11 @@ namespace deepdraw
       void
       parse_parameters(dealii::ParameterHandler &prm);
 
-      // r for one node: the fixed value if given, otherwise
-      // scaling × E × h (N/mm), the order of the nodal stiffness of a
-      // hexahedron of size h (E in MPa, h in mm), so that r ĝ and λ have
-      // the same magnitude.
+      // r: the fixed value if given, otherwise scaling × E × h (N/mm), the
+      // order of the nodal stiffness of a hexahedron of size h (E in MPa,
+      // h in mm), so that r ĝ and λ have the same magnitude. The forming
+      // problem calls it once, with h = sqrt(dx dy) of the blank's
+      // structured mesh, and gives every pair the same r.
       double
       augmentation(const double youngs_modulus,
                    const double element_size) const;
