@@ -6,23 +6,22 @@ namespace deepdraw
   namespace contact
   {
     ContactPairKinematics::ContactPairKinematics(
-      const dealii::Point<3>     &position,
-      const dealii::Tensor<1, 3> &displacement_increment,
-      const ClosestPointData     &closest_point,
-      const dealii::Tensor<1, 3> &tool_translation_increment,
-      const dealii::Tensor<1, 3> &tool_axis,
-      const Linearisation         linearisation)
+      const dealii::Point<3>           &position,
+      const dealii::Tensor<1, 3>       &displacement_increment,
+      const geometry::ProjectionResult &closest_point,
+      const dealii::Tensor<1, 3>       &tool_translation_increment,
+      const dealii::Tensor<1, 3>       &tool_axis,
+      const Linearisation               linearisation)
         : n(closest_point.normal)
         , curvature_included(false)
     {
       // d: relative motion of node and tool in the increment.
       const dealii::Tensor<1, 3> d
         = displacement_increment - tool_translation_increment;
-      const dealii::Tensor<1, 3> x_minus_foot
-        = position - closest_point.foot_point;
-      g_N = x_minus_foot * n;
-      g_T = d - (d * n) * n;
-      g   = g_N * n + g_T;
+      const dealii::Tensor<1, 3> x_minus_foot = position - closest_point.foot;
+      g_N                                     = x_minus_foot * n;
+      g_T                                     = d - (d * n) * n;
+      g                                       = g_N * n + g_T;
 
       // Every variation enters through δd = δΔu − a δz: the node moves by
       // δΔu and the tool (foot point and Δx̄_tool) by a δz.
@@ -34,10 +33,8 @@ namespace deepdraw
         const dealii::Tensor<1, 3> S[2]
           = {closest_point.tangent_u, closest_point.tangent_v};
         const dealii::Tensor<1, 3> S2[2][2]
-          = {{closest_point.second_derivative_uu,
-              closest_point.second_derivative_uv},
-             {closest_point.second_derivative_uv,
-              closest_point.second_derivative_vv}};
+          = {{closest_point.x_uu, closest_point.x_uv},
+             {closest_point.x_uv, closest_point.x_vv}};
 
         // Metric A, curvature B = n·x̄_,αβ, and the Hessian of the
         // distance H = A − (x − x̄)·x̄_,αβ of the closest-point problem.

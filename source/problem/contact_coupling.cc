@@ -376,18 +376,13 @@ namespace deepdraw
         // them again one ring at a time.
         if (pair.found && !(predictor && pair.open_at_start))
         {
-          contact::ClosestPointData closest;
-          closest.foot_point = projection.foot;
-          closest.normal     = projection.normal;
-          if (!projection.on_edge)
+          geometry::ProjectionResult closest = projection;
+          if (projection.on_edge)
           {
-            // Clamped feet keep the frozen linearisation (no
-            // tangents given).
-            closest.tangent_u            = projection.tangent_u;
-            closest.tangent_v            = projection.tangent_v;
-            closest.second_derivative_uu = projection.x_uu;
-            closest.second_derivative_uv = projection.x_uv;
-            closest.second_derivative_vv = projection.x_vv;
+            // Clamped feet keep the frozen linearisation (zero tangents:
+            // no curvature terms, ContactPairKinematics).
+            closest.tangent_u = closest.tangent_v = Tensor<1, 3>();
+            closest.x_uu = closest.x_uv = closest.x_vv = Tensor<1, 3>();
           }
           const bool force_controlled = definitions[pair.tool].force_controlled;
           const contact::ContactPairKinematics kinematics(

@@ -32,12 +32,12 @@ namespace
       const Tensor<1, 3> du        = random_vector(0.1);
       const Point<3>     x         = X_t + du;
       // The plane now passes through p0 + tool_step.
-      const double     distance = (x - p0 - tool_step) * n;
-      ClosestPointData cp;
-      cp.foot_point = x - distance * n;
-      cp.normal     = n;
-      cp.tangent_u  = 2. * t1;
-      cp.tangent_v  = t1 + t2;
+      const double                         distance = (x - p0 - tool_step) * n;
+      deepdraw::geometry::ProjectionResult cp;
+      cp.foot      = x - distance * n;
+      cp.normal    = n;
+      cp.tangent_u = 2. * t1;
+      cp.tangent_v = t1 + t2;
       const ContactPairKinematics kin(x, du, cp, tool_step, a);
 
       const Tensor<1, 3> d   = du - tool_step;
@@ -67,9 +67,9 @@ namespace
                   0.);
 
       // Without tangents the full linearisation falls back to frozen.
-      ClosestPointData bare;
-      bare.foot_point = cp.foot_point;
-      bare.normal     = n;
+      deepdraw::geometry::ProjectionResult bare;
+      bare.foot   = cp.foot;
+      bare.normal = n;
       const ContactPairKinematics fallback(x, du, bare, tool_step, a);
       check_true("no tangents: frozen fallback",
                  !fallback.curvature_terms_included()

@@ -9,7 +9,7 @@
 #include <cmath>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
-#include <deepdraw/contact/closest_point_data.h>
+#include <deepdraw/geometry/projection_result.h>
 #include <functional>
 #include <random>
 #include <string>
@@ -223,7 +223,7 @@ namespace contact_test
 
   // Closest point of x on the surface translated by `shift`, by Newton on
   // (u, v) from (u, v) (updated in place), to machine precision.
-  inline deepdraw::contact::ClosestPointData
+  inline deepdraw::geometry::ProjectionResult
   project(const Surface      &surface,
           const Point<3>     &x,
           const Tensor<1, 3> &shift,
@@ -249,15 +249,15 @@ namespace contact_test
         break;
     }
     surface.evaluate(u, v, S);
-    deepdraw::contact::ClosestPointData cp;
-    cp.foot_point           = Point<3>(S[0] + shift);
-    Tensor<1, 3> n          = cross_product_3d(S[1], S[2]);
-    cp.normal               = surface.orientation * n / n.norm();
-    cp.tangent_u            = S[1];
-    cp.tangent_v            = S[2];
-    cp.second_derivative_uu = S[3];
-    cp.second_derivative_uv = S[4];
-    cp.second_derivative_vv = S[5];
+    deepdraw::geometry::ProjectionResult cp;
+    cp.foot        = Point<3>(S[0] + shift);
+    Tensor<1, 3> n = cross_product_3d(S[1], S[2]);
+    cp.normal      = surface.orientation * n / n.norm();
+    cp.tangent_u   = S[1];
+    cp.tangent_v   = S[2];
+    cp.x_uu        = S[3];
+    cp.x_uv        = S[4];
+    cp.x_vv        = S[5];
     return cp;
   }
 } // namespace contact_test

@@ -68,31 +68,33 @@ namespace
 
   // Cylinder of radius R about the axis c + s e_y, outward normal;
   // parameters (angle u from e_z towards e_x, v = y).
-  ClosestPointData
+  deepdraw::geometry::ProjectionResult
   cylinder_closest_point(const Point<3> &c, const double R, const Point<3> &x)
   {
-    const double     u  = std::atan2(x[0] - c[0], x[2] - c[2]);
-    const double     su = std::sin(u), cu = std::cos(u);
-    ClosestPointData cp;
-    cp.foot_point           = c + Tensor<1, 3>({R * su, x[1] - c[1], R * cu});
-    cp.normal               = Tensor<1, 3>({su, 0., cu});
-    cp.tangent_u            = Tensor<1, 3>({R * cu, 0., -R * su});
-    cp.tangent_v            = Tensor<1, 3>({0., 1., 0.});
-    cp.second_derivative_uu = Tensor<1, 3>({-R * su, 0., -R * cu});
+    const double u  = std::atan2(x[0] - c[0], x[2] - c[2]);
+    const double su = std::sin(u), cu = std::cos(u);
+    deepdraw::geometry::ProjectionResult cp;
+    cp.foot      = c + Tensor<1, 3>({R * su, x[1] - c[1], R * cu});
+    cp.normal    = Tensor<1, 3>({su, 0., cu});
+    cp.tangent_u = Tensor<1, 3>({R * cu, 0., -R * su});
+    cp.tangent_v = Tensor<1, 3>({0., 1., 0.});
+    cp.x_uu      = Tensor<1, 3>({-R * su, 0., -R * cu});
     return cp;
   }
 
   // Newton from (Δu, λ) = (0, λ_start) against a fixed tool whose closest
   // point to x is closest_point(x).
   Solution
-  newton(const AlartCurnierLaw                                   &law,
-         const double                                             r,
-         const double                                             k,
-         const Point<3>                                          &X_0,
-         const std::function<ClosestPointData(const Point<3> &)> &closest_point,
-         const Tensor<1, 3>                                      &f_ext,
-         const Tensor<1, 3> &lambda_start  = Tensor<1, 3>(),
-         const Linearisation linearisation = Linearisation::full)
+  newton(
+    const AlartCurnierLaw &law,
+    const double           r,
+    const double           k,
+    const Point<3>        &X_0,
+    const std::function<deepdraw::geometry::ProjectionResult(const Point<3> &)>
+                       &closest_point,
+    const Tensor<1, 3> &f_ext,
+    const Tensor<1, 3> &lambda_start  = Tensor<1, 3>(),
+    const Linearisation linearisation = Linearisation::full)
   {
     Solution s;
     s.lambda = lambda_start;
@@ -256,11 +258,11 @@ main()
     const Tensor<1, 3> t1 = random_tangent(n), t2 = cross_product_3d(n, t1);
     auto               plane = [&](const Point<3> &x)
     {
-      ClosestPointData cp;
-      cp.foot_point = x - (x * n) * n;
-      cp.normal     = n;
-      cp.tangent_u  = t1;
-      cp.tangent_v  = t2;
+      deepdraw::geometry::ProjectionResult cp;
+      cp.foot      = x - (x * n) * n;
+      cp.normal    = n;
+      cp.tangent_u = t1;
+      cp.tangent_v = t2;
       return cp;
     };
 

@@ -7,7 +7,7 @@
 
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
-#include <deepdraw/contact/closest_point_data.h>
+#include <deepdraw/geometry/projection_result.h>
 
 namespace deepdraw
 {
@@ -34,18 +34,20 @@ namespace deepdraw
     public:
       // position: x = X_t + Δu; displacement_increment: Δu;
       // closest_point: the tool surface at the foot point of x, in the
-      // tool's current position; tool_translation_increment: Δx̄_tool, the
+      // tool's current position (foot, normal, tangents and second
+      // derivatives; zero tangents skip the curvature terms: the frozen
+      // normal); tool_translation_increment: Δx̄_tool, the
       // tool's rigid translation since the start of the increment;
       // tool_axis: unit axis a if the tool position z is an unknown (the
       // blank holder: surface and Δx̄_tool both move by a δz), zero
       // otherwise (punch, die), which makes dĝ/dz = 0.
       ContactPairKinematics(
-        const dealii::Point<3>     &position,
-        const dealii::Tensor<1, 3> &displacement_increment,
-        const ClosestPointData     &closest_point,
-        const dealii::Tensor<1, 3> &tool_translation_increment,
-        const dealii::Tensor<1, 3> &tool_axis     = dealii::Tensor<1, 3>(),
-        const Linearisation         linearisation = Linearisation::full);
+        const dealii::Point<3>           &position,
+        const dealii::Tensor<1, 3>       &displacement_increment,
+        const geometry::ProjectionResult &closest_point,
+        const dealii::Tensor<1, 3>       &tool_translation_increment,
+        const dealii::Tensor<1, 3>       &tool_axis = dealii::Tensor<1, 3>(),
+        const Linearisation               linearisation = Linearisation::full);
 
       double
       normal_gap() const;
