@@ -247,34 +247,6 @@ namespace deepdraw
     }
 
 
-    std::string
-    FormingProblem::describe(const IncrementOutcome outcome)
-    {
-      switch (outcome)
-      {
-        case IncrementOutcome::converged:
-          return "converged";
-        case IncrementOutcome::too_many_iterations:
-          return "too many Newton iterations";
-        case IncrementOutcome::diverged:
-          return "growing residual";
-        case IncrementOutcome::stagnated:
-          return "residual still above Newton/Stagnation residual";
-        case IncrementOutcome::not_a_number:
-          return "residual is not a number";
-        case IncrementOutcome::inverted_element:
-          return "inverted element (det F <= 0)";
-        case IncrementOutcome::return_mapping_failed:
-          return "local return mapping failed";
-        case IncrementOutcome::enhanced_not_converged:
-          return "enhanced parameters of an element did not converge";
-        case IncrementOutcome::linear_solver_failed:
-          return "linear solver failed";
-      }
-      return "unknown";
-    }
-
-
     namespace
     {
       // l2 norm of the first n entries (the displacement block).
@@ -341,28 +313,13 @@ namespace deepdraw
         extrapolate ? (new_load - old_load) / last_load_increment : 0.);
       residual_history.clear();
       contact_residual_history.clear();
-      contact_changes = 0;
-      Vector<double> correction(displacement_increment.size());
-      double         correction_norm   = 0.;
-      double         smallest_residual = std::numeric_limits<double>::max();
-
-      // Merit of the current assembly: the out-of-balance forces of all
-      // equations, in N (free displacement rows, r F_sup, tool equations).
-      const auto merit = [&]()
-      {
-        Vector<double> free_residual = system_rhs;
-        homogeneous_constraints.set_zero(free_residual);
-        const double force         = block_norm(free_residual, n_u);
-        const double contact_force = contact.residual_norm(system_rhs);
-        return std::sqrt(force * force + contact_force * contact_force);
-      };
-      bool         assembled        = false;
-      unsigned int changes_reported = 0;
+      contact_changes  = 0;
+      changes_reported = 0;
 
       // Extrapolation predictor: the last increment scaled to this one
       // (du, and lambda, z linearly in the load), prescribed dofs exact.
       // Without a linear solve, so the checks count one solve fewer.
-      unsigned int skipped_solves = 0;
+      bool assembled = false;
       if (extrapolate)
       {
         const double ratio = (new_load - old_load) / last_load_increment;
@@ -376,15 +333,10 @@ namespace deepdraw
                                  - previous_converged_solution[i]);
         predictor_constraints.distribute(displacement_increment);
         const IncrementOutcome status
-          = assemble(displacement_increment, homogeneous_constraints, true);
+          = assemble_at(displacement_increment, false);
         if (status == IncrementOutcome::converged)
-        {
-          assembled      = true;
-          skipped_solves = 1;
-        }
-        else if (status == IncrementOutcome::inverted_element
-                 || status == IncrementOutcome::return_mapping_failed
-                 || status == IncrementOutcome::enhanced_not_converged)
+          assembled = true;
+        else if (solver::is_failed_point(status))
         {
           // Back to the tangent predictor from the converged state.
           start_from_converged_state();
@@ -395,183 +347,132 @@ namespace deepdraw
           return status;
       }
 
-      for (unsigned int check = skipped_solves;; ++check)
+      solver::NewtonIncrement newton(newton_parameters);
+      const IncrementOutcome  outcome
+        = newton.run(*this, displacement_increment, assembled, iterations);
+      residual_history         = newton.force_residuals();
+      contact_residual_history = newton.contact_residuals();
+      return outcome;
+    }
+
+
+    // The forming problem as solver::NewtonSystem: the Newton unknowns are
+    // displacement_increment = [du | lambda | z].
+    FormingProblem::IncrementOutcome
+    FormingProblem::assemble_at(const Vector<double> &x, const bool predictor)
+    {
+      return assemble(x,
+                      predictor ? predictor_constraints
+                                : homogeneous_constraints,
+                      true);
+    }
+
+
+    bool
+    FormingProblem::solve_correction(Vector<double> &correction,
+                                     const bool      predictor)
+    {
+      Timer timer;
+      try
       {
-        // Linear solves so far: the predictor's (unless extrapolated) and
-        // the corrections'.
-        iterations = check - skipped_solves;
-        // Iteration 0 is the tangent predictor (reference Eq. 13): the
-        // prescribed increment enters through inhomogeneous constraints.
-        const AffineConstraints<double> &constraints
-          = check == 0 ? predictor_constraints : homogeneous_constraints;
-        if (!assembled)
-        {
-          const IncrementOutcome status
-            = assemble(displacement_increment, constraints, true);
-          if (status != IncrementOutcome::converged)
-            return status;
-        }
-        assembled = false;
-
-        if (check > 0)
-        {
-          Vector<double> free_residual = system_rhs;
-          homogeneous_constraints.set_zero(free_residual);
-          double reference = block_norm(internal_force, n_u);
-          for (const Tensor<1, 3> &force : contact.tool_forces())
-            reference = std::max(reference, force.norm());
-          if (!(reference > 0.))
-            reference = 1.;
-          const double force_residual
-            = block_norm(free_residual, n_u) / reference;
-          const double contact_residual
-            = contact.residual_norm(system_rhs) / reference;
-          // The correction is measured against the displacement so far,
-          // not the increment alone: on tiny increments (cut-backs) a
-          // 1e-6 mm correction of a slipping flange is not a lack of
-          // convergence.
-          Vector<double> displacement = total_displacement;
-          for (types::global_dof_index i = 0; i < n_u; ++i)
-            displacement[i] += displacement_increment[i];
-          const double displacement_norm
-            = std::max(block_norm(displacement_increment, n_u),
-                       block_norm(displacement, n_u));
-          const double relative_correction
-            = displacement_norm > 0. ? correction_norm / displacement_norm : 0.;
-          residual_history.push_back(force_residual);
-          contact_residual_history.push_back(contact_residual);
-          newton_file.add_row({double(increment_number + 1),
-                               new_load,
-                               double(iterations),
-                               force_residual,
-                               contact_residual,
-                               relative_correction,
-                               double(contact_changes - changes_reported)});
-          changes_reported = contact_changes;
-
-          if (!std::isfinite(force_residual)
-              || !std::isfinite(contact_residual))
-            return IncrementOutcome::not_a_number;
-          // After the predictor the whole increment is "correction":
-          // there only the residuals decide.
-          // First check after the predictor (tangent or extrapolated).
-          const bool only_predicted = check == 1;
-          const bool tool_forces_met
-            = newton_parameters.tool_force_tolerance <= 0.
-              || contact.tool_force_error(system_rhs, new_load, reference)
-                   <= newton_parameters.tool_force_tolerance;
-          if (force_residual <= newton_parameters.force_tolerance
-              && contact_residual <= newton_parameters.force_tolerance
-              && tool_forces_met
-              && (only_predicted
-                  || relative_correction
-                       <= newton_parameters.correction_tolerance))
-            return IncrementOutcome::converged;
-          const double residual = std::max(force_residual, contact_residual);
-          smallest_residual     = std::min(smallest_residual, residual);
-          if (residual > newton_parameters.divergence_ratio * smallest_residual)
-            return IncrementOutcome::diverged;
-          if (iterations >= newton_parameters.maximum_iterations)
-            return IncrementOutcome::too_many_iterations;
-          if (newton_parameters.stagnation_iterations > 0
-              && iterations >= newton_parameters.stagnation_iterations
-              && residual > newton_parameters.stagnation_residual)
-            return IncrementOutcome::stagnated;
-        }
-
-        Timer timer;
-        try
-        {
-          linear_solver->solve(system_matrix,
-                               system_rhs,
-                               correction,
-                               contact.tool_position_unknowns());
-        }
-        catch (const std::exception &error)
-        {
-          std::cerr << "  " << error.what() << std::endl;
-          return IncrementOutcome::linear_solver_failed;
-        }
-        constraints.distribute(correction);
-        solve_time += timer.wall_time();
-        correction_norm = block_norm(correction, n_u);
-        if (!std::isfinite(correction.l2_norm()))
-          return IncrementOutcome::not_a_number;
-        // A step that inverts an element or breaks a return mapping is too
-        // long whatever the merit says: it is halved up to
-        // failed_point_halvings times before the increment is cut.
-        const unsigned int failed_point_halvings = 5;
-        const auto         failed_point = [](const IncrementOutcome status)
-        {
-          return status == IncrementOutcome::inverted_element
-                 || status == IncrementOutcome::return_mapping_failed
-                 || status == IncrementOutcome::enhanced_not_converged;
-        };
-        if (check == 0)
-        {
-          // The predictor extrapolates the last increment linearly; near
-          // tool radii that can fold an element. Its free part is then
-          // halved; prescribed displacements keep their full increment.
-          const Vector<double> start = displacement_increment;
-          double               step  = 1.;
-          for (unsigned int trial = 0;; ++trial)
-          {
-            displacement_increment = start;
-            for (types::global_dof_index i = 0; i < correction.size(); ++i)
-              displacement_increment[i]
-                += (constraints.is_constrained(i) ? 1. : step) * correction[i];
-            const IncrementOutcome status
-              = assemble(displacement_increment, homogeneous_constraints, true);
-            if (failed_point(status) && trial < failed_point_halvings)
-            {
-              step *= 0.5;
-              continue;
-            }
-            if (status != IncrementOutcome::converged)
-              return status;
-            break;
-          }
-          assembled = true;
-          continue;
-        }
-        if (newton_parameters.line_search_steps == 0)
-        {
-          displacement_increment += correction;
-          continue;
-        }
-
-        // Backtracking line search on the merit: semismooth Newton on
-        // many contact nodes can cycle between states; damping the step
-        // until the out-of-balance force decreases breaks the cycle and
-        // leaves full steps (quadratic convergence) near the solution.
-        const double         merit_now = merit();
-        const Vector<double> start     = displacement_increment;
-        double               step      = 1.;
-        for (unsigned int trial = 0, merit_trial = 0;; ++trial)
-        {
-          displacement_increment = start;
-          displacement_increment.add(step, correction);
-          const IncrementOutcome status
-            = assemble(displacement_increment, homogeneous_constraints, true);
-          if (failed_point(status))
-          {
-            if (trial
-                >= newton_parameters.line_search_steps + failed_point_halvings)
-              return status;
-            step *= 0.5;
-            continue;
-          }
-          if (status != IncrementOutcome::converged)
-            return status;
-          if (merit() <= (1. - 1e-4 * step) * merit_now
-              || merit_trial >= newton_parameters.line_search_steps)
-            break;
-          ++merit_trial;
-          step *= 0.5;
-        }
-        correction_norm *= step;
-        assembled = true;
+        linear_solver->solve(system_matrix,
+                             system_rhs,
+                             correction,
+                             contact.tool_position_unknowns());
       }
+      catch (const std::exception &error)
+      {
+        std::cerr << "  " << error.what() << std::endl;
+        return false;
+      }
+      (predictor ? predictor_constraints : homogeneous_constraints)
+        .distribute(correction);
+      solve_time += timer.wall_time();
+      return true;
+    }
+
+
+    bool
+    FormingProblem::is_prescribed(const types::global_dof_index i) const
+    {
+      return predictor_constraints.is_constrained(i);
+    }
+
+
+    solver::ResidualMeasures
+    FormingProblem::residual_measures() const
+    {
+      const types::global_dof_index n_u           = dof_handler.n_dofs();
+      Vector<double>                free_residual = system_rhs;
+      homogeneous_constraints.set_zero(free_residual);
+      // Forces are measured against the internal forces (reactions
+      // included) or the largest tool force (doc/theory.md §5.2).
+      double reference = block_norm(internal_force, n_u);
+      for (const Tensor<1, 3> &force : contact.tool_forces())
+        reference = std::max(reference, force.norm());
+      if (!(reference > 0.))
+        reference = 1.;
+      solver::ResidualMeasures measures;
+      measures.force   = block_norm(free_residual, n_u) / reference;
+      measures.contact = contact.residual_norm(system_rhs) / reference;
+      measures.tool_forces_met
+        = newton_parameters.tool_force_tolerance <= 0.
+          || contact.tool_force_error(system_rhs, target_load, reference)
+               <= newton_parameters.tool_force_tolerance;
+      return measures;
+    }
+
+
+    double
+    FormingProblem::merit() const
+    {
+      // The out-of-balance forces of all equations, in N (free
+      // displacement rows, r F_sup, tool equations).
+      Vector<double> free_residual = system_rhs;
+      homogeneous_constraints.set_zero(free_residual);
+      const double force = block_norm(free_residual, dof_handler.n_dofs());
+      const double contact_force = contact.residual_norm(system_rhs);
+      return std::sqrt(force * force + contact_force * contact_force);
+    }
+
+
+    double
+    FormingProblem::correction_norm(const Vector<double> &correction) const
+    {
+      return block_norm(correction, dof_handler.n_dofs());
+    }
+
+
+    double
+    FormingProblem::relative_correction(const Vector<double> &x,
+                                        const double correction_norm) const
+    {
+      // Against the displacement so far, not the increment alone: on tiny
+      // increments (cut-backs) a 1e-6 mm correction of a slipping flange is
+      // not a lack of convergence (doc/decisions.md D26).
+      const types::global_dof_index n_u          = dof_handler.n_dofs();
+      Vector<double>                displacement = total_displacement;
+      for (types::global_dof_index i = 0; i < n_u; ++i)
+        displacement[i] += x[i];
+      const double displacement_norm
+        = std::max(block_norm(x, n_u), block_norm(displacement, n_u));
+      return displacement_norm > 0. ? correction_norm / displacement_norm : 0.;
+    }
+
+
+    void
+    FormingProblem::record_iteration(const unsigned int              iterations,
+                                     const solver::ResidualMeasures &residuals,
+                                     const double relative_correction)
+    {
+      newton_file.add_row({double(increment_number + 1),
+                           target_load,
+                           double(iterations),
+                           residuals.force,
+                           residuals.contact,
+                           relative_correction,
+                           double(contact_changes - changes_reported)});
+      changes_reported = contact_changes;
     }
 
 
@@ -683,8 +584,8 @@ namespace deepdraw
         if (outcome != IncrementOutcome::converged)
         {
           std::cout << "  load " << format_load(new_load) << ": "
-                    << describe(outcome) << ", cutting the increment back"
-                    << std::endl;
+                    << solver::describe(outcome)
+                    << ", cutting the increment back" << std::endl;
           trial_history             = history;
           trial_enhanced_parameters = enhanced_parameters;
           if (!control.cut_back())
@@ -693,7 +594,7 @@ namespace deepdraw
                                    < increment_parameters.minimum_increment;
             throw RunFailure(
               "the increment from load " + format_load(old_load) + " to "
-              + format_load(new_load) + " failed (" + describe(outcome)
+              + format_load(new_load) + " failed (" + solver::describe(outcome)
               + ") after "
               + std::to_string(control.cut_backs_of_current_increment())
               + " attempt(s), and "

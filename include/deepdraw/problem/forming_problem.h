@@ -34,6 +34,7 @@
 #include <deepdraw/problem/process_parameters.h>
 #include <deepdraw/solver/increment_control.h>
 #include <deepdraw/solver/linear_solver.h>
+#include <deepdraw/solver/newton_increment.h>
 #include <deepdraw/solver/newton_parameters.h>
 #include <memory>
 #include <string>
@@ -53,7 +54,7 @@ namespace deepdraw
       using std::runtime_error::runtime_error;
     };
 
-    class FormingProblem
+    class FormingProblem : private solver::NewtonSystem
     {
     public:
       static void
@@ -142,20 +143,29 @@ namespace deepdraw
       n_displacement_dofs() const;
 
     private:
-      enum class IncrementOutcome
-      {
-        converged,
-        too_many_iterations,
-        diverged,
-        stagnated,
-        not_a_number,
-        inverted_element,
-        return_mapping_failed,
-        enhanced_not_converged,
-        linear_solver_failed
-      };
-      static std::string
-      describe(IncrementOutcome outcome);
+      using IncrementOutcome = solver::IncrementOutcome;
+
+      // solver::NewtonSystem (doc/theory.md §5): the increment's Newton
+      // unknowns are displacement_increment.
+      IncrementOutcome
+      assemble_at(const Vector<double> &x, bool predictor) override;
+      bool
+      solve_correction(Vector<double> &correction, bool predictor) override;
+      bool
+      is_prescribed(types::global_dof_index i) const override;
+      solver::ResidualMeasures
+      residual_measures() const override;
+      double
+      merit() const override;
+      double
+      correction_norm(const Vector<double> &correction) const override;
+      double
+      relative_correction(const Vector<double> &x,
+                          double                correction_norm) const override;
+      void
+      record_iteration(unsigned int                    iterations,
+                       const solver::ResidualMeasures &residuals,
+                       double relative_correction) override;
 
       void
       setup_system();
@@ -266,8 +276,10 @@ namespace deepdraw
       std::vector<double> column_thickness;
       std::vector<double> residual_history;
       std::vector<double> contact_residual_history;
-      unsigned int        contact_changes  = 0;
-      unsigned int        n_plastic_points = 0;
+      unsigned int        contact_changes = 0;
+      // Contact state changes already written to newton.csv.
+      unsigned int changes_reported = 0;
+      unsigned int n_plastic_points = 0;
 
       // Timers of the current increment (seconds)
       double assembly_time = 0.;
