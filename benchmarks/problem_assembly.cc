@@ -1,4 +1,4 @@
-// Assembly cost of the reference blank (DESIGN §5: 25 x 25 x 2 hexahedra,
+// Assembly cost of the reference blank (doc/results.md: 25 x 25 x 2 hexahedra,
 // 75 x 75 x 0.81 mm, NUMISHEET'93 aluminium) in a plastic state: residual
 // and tangent of FormingProblem::assemble_system for a displacement
 // increment of ~1 % strain (biaxial stretching, thinning, shear, a rotation

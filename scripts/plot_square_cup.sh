@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# PNG plots of the square-cup CSV tables (DESIGN §2, §5), without a display:
+# PNG plots of the square-cup CSV tables (doc/user_guide.md §3, doc/results.md), without a display:
 #   punch_force.png   punch and blank-holder force vs punch travel
 #   draw_in.png       flange draw-in DX, DY, DD vs punch travel
 #   thickness_OX.png  thickness strain along OX, one curve per travel file

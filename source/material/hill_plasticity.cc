@@ -23,7 +23,7 @@ namespace deepdraw
         return t.access_raw_entry(6 * I + J);
       }
 
-      // Local Newton (DESIGN §1.2): |f| <= this * Y is converged, well
+      // Local Newton (doc/theory_material.md): |f| <= this * Y is converged, well
       // below the yield-check tolerance so that a converged state
       // re-evaluated with a zero increment is elastic.
       constexpr double       residual_tolerance = 1e-13;
@@ -226,7 +226,7 @@ namespace deepdraw
         m[2 + a] = shear_eigenvalues[a];
       }
 
-      // Scalar equation for gamma (DESIGN §1.2), written as
+      // Scalar equation for gamma (doc/theory_material.md), written as
       //   r(gamma) = 1/sigma_bar(gamma) - 1/Y(epbar_n + gamma sigma_bar) = 0,
       // with sigma_bar^2 = sum m_a w_a^2 / (1 + gamma beta m_a)^2. For von
       // Mises 1/sigma_bar is linear in gamma, so this form is nearly linear

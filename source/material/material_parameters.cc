@@ -146,7 +146,7 @@ namespace deepdraw
       require(hill_G >= 0., "Hill G", hill_G, ">= 0");
       require(hill_H >= 0., "Hill H", hill_H, ">= 0");
       // Pairwise sums > 0 make M positive definite on deviators, so the
-      // yield surface is bounded (DESIGN §1.2).
+      // yield surface is bounded (doc/theory_material.md).
       require(hill_G + hill_H > 0.,
               "Hill G",
               hill_G,

@@ -413,7 +413,7 @@ namespace deepdraw
       total_search_time += timer.wall_time();
 
       // Local systems [u (3), lambda (3), z (0 or 1)], residual
-      // r = [-P, F_sup, a.P]; rhs = -r (DESIGN §1.4, reference Eq. 19).
+      // r = [-P, F_sup, a.P]; rhs = -r (doc/theory_contact.md, reference Eq. 19).
       std::vector<unsigned int>            active_pairs(definitions.size(), 0);
       FullMatrix<double>                   local_matrix;
       Vector<double>                       local_rhs;

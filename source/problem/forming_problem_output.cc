@@ -19,7 +19,7 @@ namespace deepdraw
     void
     FormingProblem::compute_thickness()
     {
-      // Thickness measured as a real distance (DESIGN §2): for every
+      // Thickness measured as a real distance (doc/user_guide.md §3): for every
       // through-thickness column, (x_top - x_bottom) . n with n the sheet
       // normal, the average of the outward normals of the top faces minus
       // those of the bottom faces around the column.
@@ -55,7 +55,7 @@ namespace deepdraw
     FormingProblem::sheet_volume() const
     {
       // Σ JxW over the Gauss points of the current configuration: exact for
-      // the trilinear geometry (volume conservation check, DESIGN §5).
+      // the trilinear geometry (volume conservation check, doc/results.md).
       double volume = 0.;
       for (const fe::CellGeometry &cell : cell_geometry)
         for (const double w : cell.JxW)
@@ -123,7 +123,7 @@ namespace deepdraw
             tool_columns.push_back(tool.name + suffix);
         tools_file.open(directory + "/tools.csv", tool_columns);
 
-        // Square-cup tables (DESIGN §2): the punch is the tool named
+        // Square-cup tables (doc/user_guide.md §3): the punch is the tool named
         // "punch", the blank holder the first force-controlled tool.
         const std::vector<ToolDefinition> &tools = contact.tool_definitions();
         for (unsigned int k = 0; k < tools.size(); ++k)

@@ -104,7 +104,7 @@ main()
                                   n,
                                   hn));
 
-          // Closed forms (DESIGN §1.4).
+          // Closed forms (doc/theory_contact.md).
           const Tensor<2, 3> I = identity();
           if (state == ContactState::open)
           {

@@ -1,4 +1,4 @@
-// The three states of the Alart–Curnier law (DESIGN §1.4) at chosen inputs,
+// The three states of the Alart–Curnier law (doc/theory_contact.md) at chosen inputs,
 // the complementarity conditions at solution points, and the independence of
 // the solution from the augmentation parameter r: a pair (λ, ĝ) satisfying
 // the contact conditions gives F_sup = 0 for every r, a pair violating them

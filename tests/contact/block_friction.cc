@@ -1,5 +1,5 @@
 // Coulomb friction of a pressed block dragged along a flat rigid tool
-// (DESIGN §4, issue 4 test 2).
+// (doc/decisions.md D8, issue 4 test 2).
 //
 // A 2 x 1 x 1 mm block (half model, symmetry plane y = 0, 4 x 2 x 2
 // elements) lies on the plane z = 0 (data/flat_die.tool), friction
@@ -11,7 +11,7 @@
 //
 // Slip (s = 0.01 mm, 30 x the elastic shear displacement mu p H / G =
 // 3.2e-4 mm needed to reach the limit): every bottom node must slip, where
-// the law (DESIGN §1.4) gives |lambda_T| = mu lambda_N per node; the slip
+// the law (doc/theory_contact.md) gives |lambda_T| = mu lambda_N per node; the slip
 // direction is +x at every node (nu = 0: no motion along y to first order in
 // the strains; the y component of the die force is bounded by eps^2 ~ 1e-6
 // of its normal force), so the total

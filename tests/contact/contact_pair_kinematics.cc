@@ -1,4 +1,4 @@
-// Gap vector ĝ = g_N n + g_T of one node against a rigid tool (DESIGN §1.4):
+// Gap vector ĝ = g_N n + g_T of one node against a rigid tool (doc/theory_contact.md):
 // values on a plane against the analytic expressions, distances on a sphere
 // and a torus against their closed forms, and the full linearisation (moving
 // foot point and turning normal) against central differences with a fresh

@@ -3,7 +3,7 @@
 A plate lies on the fixed flat die (data/flat_die.tool, z = 0); a flat holder
 (data/flat_holder.tool, z = 0.5, normal -z) on its top face is
 force-controlled along a = (0, 0, -1). Its position z is one more unknown
-whose equation is sum_pairs a . P = F(t) (DESIGN §1.4). At every converged
+whose equation is sum_pairs a . P = F(t) (doc/theory_contact.md). At every converged
 increment:
   * the holder force along a equals F(t): the equation is part of the Newton
     system, converged to 1e-12 of the force scale, so 1e-8 relative leaves

@@ -4,7 +4,7 @@
 The semismooth Newton method on the Alart-Curnier system converges
 quadratically once the contact status (open / stick / slip of every pair) no
 longer changes, provided the Jacobian is the exact derivative of the discrete
-residual (DESIGN 1.2, 1.4: curvature terms of the cylinder, slip direction,
+residual (doc/theory_material.md, doc/theory_contact.md: curvature terms of the cylinder, slip direction,
 geometric terms). As in tests/regression/tension_bar.check.py the order is
 measured by log r_{k+1} / log r_k >= 1.8 on the relative residuals r of
 newton.csv (max of force and contact residual), in the asymptotic range:

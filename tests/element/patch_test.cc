@@ -1,4 +1,4 @@
-// Patch test (DESIGN §4) on a distorted mesh: an affine displacement
+// Patch test (doc/decisions.md D8) on a distorted mesh: an affine displacement
 // u = t A X prescribed on all six faces of the unit cube must be reproduced
 // exactly at every interior node, with the same Cauchy stress in every cell,
 // for every element technology.

@@ -1,5 +1,5 @@
 // The assembled tangent is the exact derivative of the assembled residual
-// (DESIGN §1.2): compare it with central finite differences on a small
+// (doc/theory_material.md): compare it with central finite differences on a small
 // distorted mesh, in an elastic and in a plastic state, for every element
 // technology, after a few increments with rotation. With incompatible modes
 // the residual is the condensed one (enhanced parameters solved in the

@@ -1,4 +1,4 @@
-// Volumetric locking under isochoric plastic flow (DESIGN §1.3, §4): plane
+// Volumetric locking under isochoric plastic flow (doc/theory.md §3): plane
 // strain pure bending of an elastic-perfectly plastic von Mises beam,
 // incompatible modes and selective reduced (SRI) against full 2x2x2
 // integration.

@@ -7,7 +7,7 @@
 // [F s^2 + G c^2], i.e. r0 = H/G, r90 = H/F, r45 = N/(F+G) - 1/2.
 // The stress stays uniaxial, so the implicit flow direction is exact and
 // r matches to 1e-6 (observed ~1e-12); the nominal values 0.71, 0.58, 0.70
-// of DESIGN §5 within 1 %.
+// of doc/results.md within 1 %.
 #include "../test_utilities.h"
 #include "material_test_tools.h"
 

@@ -1,5 +1,5 @@
 // The consistent tangent of HillPlasticity::update equals a central finite
-// difference of the stress update (DESIGN §1.2: the global Newton's quadratic
+// difference of the stress update (doc/theory_material.md: the global Newton's quadratic
 // convergence relies on it). Elastic, plastic, kinematic hardening, perfect
 // plasticity, several multiaxial and large increments.
 //

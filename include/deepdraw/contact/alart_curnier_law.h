@@ -1,4 +1,4 @@
-// The node-level frictional contact law of DESIGN §1.4: Alart–Curnier's
+// The node-level frictional contact law of doc/theory_contact.md: Alart–Curnier's
 // augmented-Lagrangian projection and its generalised (semismooth)
 // derivatives, for one sheet node against one rigid tool (reference Eq. 12).
 // All vectors are global components; the law knows nothing of the mesh.

@@ -1,4 +1,4 @@
-// Gap vector ĝ of one node against one rigid tool (DESIGN §1.4) and its
+// Gap vector ĝ of one node against one rigid tool (doc/theory_contact.md) and its
 // derivatives with respect to the node's displacement increment Δu and to
 // the position z of a tool translated along a unit axis a (the
 // force-controlled blank holder).

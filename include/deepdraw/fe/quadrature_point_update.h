@@ -1,5 +1,5 @@
 // The constitutive update at one quadrature point of the updated-Lagrangian
-// formulation (DESIGN §1.1), and its exact linearisation.
+// formulation (doc/theory.md §1-2), and its exact linearisation.
 //
 // Chain from H = grad_{x_t}(du) (SRI-modified) to the first Piola-Kirchhoff
 // stress relative to the configuration at t:

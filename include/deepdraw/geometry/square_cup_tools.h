@@ -1,4 +1,4 @@
-// The NUMISHEET'93 square-cup tools (DESIGN §5) built from their dimensions
+// The NUMISHEET'93 square-cup tools (doc/results.md) built from their dimensions
 // as exact rational Bézier patches (planes, cylinders, tori).
 //
 // Coordinates: blank bottom surface z = 0, top z = t. The die lies below the

@@ -1,4 +1,4 @@
-// Incremental objective kinematics of one increment [t, t+dt] (DESIGN §1.1):
+// Incremental objective kinematics of one increment [t, t+dt] (doc/theory.md §1-2):
 // from the displacement-increment gradient H = grad_{x_t}(du) it computes the
 // mid-increment velocity gradient dL = H F_half^{-1} (F_half = I + H/2), the
 // strain increment d_eps = sym dL, the spin increment dW = skew dL and the

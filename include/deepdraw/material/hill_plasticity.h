@@ -1,5 +1,5 @@
 // Hill'48 elastoplasticity with Swift isotropic and Prager kinematic
-// hardening at a material point (DESIGN §1.2): fully implicit return mapping
+// hardening at a material point (doc/theory_material.md): fully implicit return mapping
 // and its exact algorithmic tangent. Theory: doc/theory_material.md.
 #ifndef deepdraw_material_hill_plasticity_h
 #define deepdraw_material_hill_plasticity_h

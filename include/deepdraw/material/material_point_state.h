@@ -1,5 +1,5 @@
 // History of one material point, all tensors in the material (orthotropy)
-// frame (DESIGN §1.1): the solver rotates in and out with R.
+// frame (doc/theory.md §1-2): the solver rotates in and out with R.
 #ifndef deepdraw_material_material_point_state_h
 #define deepdraw_material_material_point_state_h
 

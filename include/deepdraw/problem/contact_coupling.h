@@ -1,5 +1,5 @@
 // Frictional contact of the sheet with rigid tools in the monolithic
-// (u, lambda, z) system (DESIGN §1.4, reference Eqs. 12 and 19).
+// (u, lambda, z) system (doc/theory_contact.md, reference Eqs. 12 and 19).
 //
 // Every surface node of the sheet facing a tool forms a contact pair with
 // it; each pair owns an unknown contact force lambda (3 components, the

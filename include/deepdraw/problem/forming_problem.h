@@ -1,5 +1,5 @@
 // The forming problem: owns the blank's mesh, the degrees of freedom, the
-// quadrature-point history, and drives the increments (DESIGN §1, §3).
+// quadrature-point history, and drives the increments (doc/architecture.md).
 //
 // Unknowns are ordered in blocks: displacements first, then (once the
 // contact issue lands) the contact forces and the tool positions, all in one
@@ -295,7 +295,7 @@ namespace deepdraw
       unsigned int                   output_step      = 0;
       unsigned int                   increment_number = 0;
 
-      // Square-cup tables (DESIGN §2): the tool named "punch" and the
+      // Square-cup tables (doc/user_guide.md §3): the tool named "punch" and the
       // unit direction of its motion, the first force-controlled tool
       // (invalid_unsigned_int: none), the travels of the thickness
       // profiles within the run.

@@ -1,4 +1,4 @@
-// The forming process (subsection Process, DESIGN §6): how far the punch
+// The forming process (subsection Process, doc/user_guide.md): how far the punch
 // travels and how hard the blank holder presses.
 #ifndef deepdraw_problem_process_parameters_h
 #define deepdraw_problem_process_parameters_h

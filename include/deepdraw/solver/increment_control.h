@@ -1,4 +1,4 @@
-// Load stepping with cut-back and regrowth (DESIGN §1.6): proposes the next
+// Load stepping with cut-back and regrowth (doc/theory.md §5): proposes the next
 // increment of the load parameter, lands exactly on requested loads (output
 // points, the end), halves after a divergence and grows after easy increments.
 #ifndef deepdraw_solver_increment_control_h

@@ -1,5 +1,5 @@
 // Direct solution of the (unsymmetric) Newton system: UMFPACK through
-// deal.II, or MUMPS / KLU through Trilinos Amesos (DESIGN §1.4).
+// deal.II, or MUMPS / KLU through Trilinos Amesos (doc/theory.md §5, D27-D35).
 #ifndef deepdraw_solver_linear_solver_h
 #define deepdraw_solver_linear_solver_h
 

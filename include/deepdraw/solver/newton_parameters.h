@@ -1,4 +1,4 @@
-// Controls of the global Newton-Raphson loop (DESIGN §1.6).
+// Controls of the global Newton-Raphson loop (doc/theory.md §5).
 #ifndef deepdraw_solver_newton_parameters_h
 #define deepdraw_solver_newton_parameters_h
 

@@ -4,7 +4,7 @@
 # plane differently (bilinear; quadratic with non-uniform speed; rational
 # with weights 1, 2, 1; cubic x linear; u along y instead of x). The
 # junctions are exact (C0, same normal), so a node sliding across them must
-# see a continuous gap and normal (DESIGN 1.5): any jump of the tool force
+# see a continuous gap and normal (doc/tool_files.md): any jump of the tool force
 # is an artefact of the projection or of the edge handling.
 # Orientation: with u along -x and v along +y, or u along +y and v along
 # +x, x_u x x_v = -z.
