@@ -197,7 +197,7 @@ namespace deepdraw
       system_rhs.reinit(n_unknowns);
       internal_force.reinit(n_unknowns);
       total_displacement.reinit(dof_handler.n_dofs());
-      displacement_increment.reinit(n_unknowns);
+      newton_unknowns.reinit(n_unknowns);
       converged_solution.reinit(n_unknowns);
 
       // Initial state: unstressed, material axes rotated about z by
@@ -282,12 +282,12 @@ namespace deepdraw
       history             = trial_history;
       enhanced_parameters = trial_enhanced_parameters;
       for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
-        total_displacement[i] += displacement_increment[i];
+        total_displacement[i] += newton_unknowns[i];
       previous_converged_solution = converged_solution;
-      converged_solution          = displacement_increment;
+      converged_solution          = newton_unknowns;
       last_load_increment         = target_load - start_load;
       if (contact.active())
-        contact.commit(displacement_increment);
+        contact.commit(newton_unknowns);
       // Updated Lagrangian: the converged configuration becomes the
       // reference of the next increment (step-18 moves the vertices too).
       std::vector<bool> moved(triangulation.n_vertices(), false);
@@ -298,7 +298,7 @@ namespace deepdraw
             moved[cell->vertex_index(v)] = true;
             for (unsigned int c = 0; c < 3; ++c)
               cell->vertex(v)[c]
-                += displacement_increment[vertex_dofs[cell->vertex_index(v)]
+                += newton_unknowns[vertex_dofs[cell->vertex_index(v)]
                                                      [c]];
           }
       update_cell_geometry();
@@ -333,7 +333,7 @@ namespace deepdraw
       }
       std::cout << "deepdraw: " << triangulation.n_active_cells() << " cells, "
                 << dof_handler.n_dofs() << " displacement unknowns, "
-                << displacement_increment.size() - dof_handler.n_dofs()
+                << newton_unknowns.size() - dof_handler.n_dofs()
                 << " contact unknowns, "
                 << fe::to_string(element_parameters.technology) << " element"
                 << std::endl;
@@ -348,8 +348,8 @@ namespace deepdraw
                        "increment pushes them out"
                     << std::endl;
         // Tool placement, contact fields and states of the initial state.
-        assemble(displacement_increment, homogeneous_constraints, false);
-        contact.commit(displacement_increment);
+        assemble(newton_unknowns, homogeneous_constraints, false);
+        contact.commit(newton_unknowns);
       }
       write_vtu(0.);
 

@@ -35,9 +35,9 @@ namespace deepdraw
       // from their converged values (the tangent predictor's start).
       const auto start_from_converged_state = [&]()
       {
-        displacement_increment = converged_solution;
+        newton_unknowns = converged_solution;
         for (types::global_dof_index i = 0; i < n_u; ++i)
-          displacement_increment[i] = 0.;
+          newton_unknowns[i] = 0.;
       };
       start_from_converged_state();
       // The element-internal unknowns start as du does: from rest, or the
@@ -58,17 +58,17 @@ namespace deepdraw
       if (extrapolate)
       {
         const double ratio = (new_load - old_load) / last_load_increment;
-        for (types::global_dof_index i = 0; i < displacement_increment.size();
+        for (types::global_dof_index i = 0; i < newton_unknowns.size();
              ++i)
-          displacement_increment[i]
+          newton_unknowns[i]
             = i < n_u ? ratio * converged_solution[i]
                       : converged_solution[i]
                           + ratio
                               * (converged_solution[i]
                                  - previous_converged_solution[i]);
-        predictor_constraints.distribute(displacement_increment);
+        predictor_constraints.distribute(newton_unknowns);
         const IncrementOutcome status
-          = assemble_at(displacement_increment, false);
+          = assemble_at(newton_unknowns, false);
         if (status == IncrementOutcome::converged)
           assembled = true;
         else if (solver::is_failed_point(status))
@@ -84,7 +84,7 @@ namespace deepdraw
 
       solver::NewtonIncrement newton(newton_parameters);
       const IncrementOutcome  outcome
-        = newton.run(*this, displacement_increment, assembled, iterations);
+        = newton.run(*this, newton_unknowns, assembled, iterations);
       residual_history         = newton.force_residuals();
       contact_residual_history = newton.contact_residuals();
       return outcome;
@@ -92,7 +92,7 @@ namespace deepdraw
 
 
     // The forming problem as solver::NewtonSystem: the Newton unknowns are
-    // displacement_increment = [du | lambda | z].
+    // newton_unknowns = [du | lambda | z].
     FormingProblem::IncrementOutcome
     FormingProblem::assemble_at(const Vector<double> &x, const bool predictor)
     {

@@ -96,7 +96,7 @@ namespace deepdraw
       // the increment du without constraints (what one Newton iteration
       // assembles); returns false if a point failed. For benchmarks.
       bool
-      assemble_system(const Vector<double> &displacement_increment);
+      assemble_system(const Vector<double> &unknowns);
 
       const DoFHandler<3> &
       get_dof_handler() const;
@@ -146,7 +146,7 @@ namespace deepdraw
       using IncrementOutcome = solver::IncrementOutcome;
 
       // solver::NewtonSystem (doc/theory.md §5): the increment's Newton
-      // unknowns are displacement_increment.
+      // unknowns are newton_unknowns.
       IncrementOutcome
       assemble_at(const Vector<double> &x, bool predictor) override;
       bool
@@ -176,7 +176,7 @@ namespace deepdraw
       // Assembles f_int, the residual (rhs = -r on free dofs) and, if
       // requested, the tangent; trial history from du.
       IncrementOutcome
-      assemble(const Vector<double>            &displacement_increment,
+      assemble(const Vector<double>            &unknowns,
                const AffineConstraints<double> &constraints,
                bool                             assemble_matrix);
       // Trial element-internal unknowns: the committed ones times ratio.
@@ -251,10 +251,10 @@ namespace deepdraw
       Vector<double>       system_rhs;
       Vector<double>       internal_force;
       Vector<double>       total_displacement;
-      // The Newton unknowns: displacement increment (first
-      // n_displacement_dofs entries), then contact forces and tool
-      // positions (absolute values).
-      Vector<double> displacement_increment;
+      // The Newton unknowns of the increment, [du | lambda | z]: the
+      // displacement increment (first n_displacement_dofs entries), then
+      // the contact forces and the tool positions (absolute values).
+      Vector<double> newton_unknowns;
       Vector<double> converged_solution;
       // The converged unknowns before the last increment and that
       // increment's load step (Newton/Predictor = extrapolation).
