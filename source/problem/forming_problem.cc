@@ -24,6 +24,7 @@ namespace deepdraw
     {
       BlankGeometry::declare_parameters(prm);
       ProcessParameters::declare_parameters(prm);
+      ProcessTables::declare_parameters(prm);
       prm.enter_subsection("Material");
       material::MaterialParameters::declare_parameters(prm);
       prm.leave_subsection();
@@ -49,6 +50,7 @@ namespace deepdraw
     {
       geometry.parse_parameters(prm);
       process_parameters.parse_parameters(prm);
+      process_tables.parse_parameters(prm, geometry);
       prm.enter_subsection("Material");
       material_parameters.parse_parameters(prm);
       prm.leave_subsection();
@@ -86,6 +88,10 @@ namespace deepdraw
       linear_solver
         = std::make_unique<solver::LinearSolver>(linear_solver_parameters);
       setup_system();
+      process_tables.set_up(contact,
+                            process_parameters.punch_travel,
+                            initial_vertices,
+                            column_end_vertices);
     }
 
 
@@ -298,8 +304,7 @@ namespace deepdraw
             moved[cell->vertex_index(v)] = true;
             for (unsigned int c = 0; c < 3; ++c)
               cell->vertex(v)[c]
-                += newton_unknowns[vertex_dofs[cell->vertex_index(v)]
-                                                     [c]];
+                += newton_unknowns[vertex_dofs[cell->vertex_index(v)][c]];
           }
       update_cell_geometry();
       compute_thickness();

@@ -58,17 +58,15 @@ namespace deepdraw
       if (extrapolate)
       {
         const double ratio = (new_load - old_load) / last_load_increment;
-        for (types::global_dof_index i = 0; i < newton_unknowns.size();
-             ++i)
-          newton_unknowns[i]
-            = i < n_u ? ratio * converged_solution[i]
-                      : converged_solution[i]
-                          + ratio
-                              * (converged_solution[i]
-                                 - previous_converged_solution[i]);
+        for (types::global_dof_index i = 0; i < newton_unknowns.size(); ++i)
+          newton_unknowns[i] = i < n_u
+                                 ? ratio * converged_solution[i]
+                                 : converged_solution[i]
+                                     + ratio
+                                         * (converged_solution[i]
+                                            - previous_converged_solution[i]);
         predictor_constraints.distribute(newton_unknowns);
-        const IncrementOutcome status
-          = assemble_at(newton_unknowns, false);
+        const IncrementOutcome status = assemble_at(newton_unknowns, false);
         if (status == IncrementOutcome::converged)
           assembled = true;
         else if (solver::is_failed_point(status))

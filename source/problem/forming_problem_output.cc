@@ -123,46 +123,7 @@ namespace deepdraw
             tool_columns.push_back(tool.name + suffix);
         tools_file.open(directory + "/tools.csv", tool_columns);
 
-        // Square-cup tables (doc/user_guide.md §3): the punch is the tool named
-        // "punch", the blank holder the first force-controlled tool.
-        const std::vector<ToolDefinition> &tools = contact.tool_definitions();
-        for (unsigned int k = 0; k < tools.size(); ++k)
-        {
-          std::string name = tools[k].name;
-          std::transform(name.begin(),
-                         name.end(),
-                         name.begin(),
-                         [](const unsigned char c) { return std::tolower(c); });
-          if (punch_tool == numbers::invalid_unsigned_int && name == "punch")
-            punch_tool = k;
-          if (holder_tool == numbers::invalid_unsigned_int
-              && tools[k].force_controlled)
-            holder_tool = k;
-        }
-        if (punch_tool != numbers::invalid_unsigned_int)
-        {
-          // Direction of the punch motion over the whole run; a punch
-          // that does not move is taken to push along -z.
-          const ToolDefinition &punch = tools[punch_tool];
-          if (punch.force_controlled)
-            punch_direction = punch.axis;
-          else
-            punch_direction
-              = contact.prescribed_translation(punch_tool,
-                                               process_parameters.punch_travel)
-                - contact.prescribed_translation(punch_tool, 0.);
-          if (punch_direction.norm() > 0.)
-            punch_direction /= punch_direction.norm();
-          else
-            punch_direction = Tensor<1, 3>({0., 0., -1.});
-          punch_force_file.open(directory + "/punch_force.csv",
-                                {"punch_travel_mm",
-                                 "punch_force_N",
-                                 "holder_force_N",
-                                 "holder_z_mm"});
-        }
-        draw_in_file.open(directory + "/draw_in.csv",
-                          {"punch_travel_mm", "DX_mm", "DY_mm", "DD_mm"});
+        process_tables.open(directory);
       }
       write_increment_tables(0.);
     }
@@ -192,49 +153,11 @@ namespace deepdraw
             tool_row.push_back(contact.tools()[k].translation()[c]);
         }
         tools_file.add_row(tool_row);
-        write_process_tables(load);
+        process_tables.write(load, contact, triangulation.get_vertices());
         for (const double travel : profile_travels)
           if (std::abs(travel - load) < 1e-9 * std::max(1., travel))
             write_thickness_profiles(travel);
       }
-    }
-
-
-    void
-    FormingProblem::write_process_tables(const double load)
-    {
-      // Forces of the tools on the sheet, positive when the punch pushes
-      // along its motion and the holder presses along its axis.
-      const std::vector<Tensor<1, 3>> forces       = contact.tool_forces();
-      double                          holder_force = 0., holder_z = 0.;
-      if (holder_tool != numbers::invalid_unsigned_int)
-      {
-        holder_force
-          = forces[holder_tool] * contact.tool_definitions()[holder_tool].axis;
-        holder_z = contact.tools()[holder_tool].translation()[2];
-      }
-      if (punch_tool != numbers::invalid_unsigned_int)
-        punch_force_file.add_row(
-          {load, forces[punch_tool] * punch_direction, holder_force, holder_z});
-
-      // Draw-in of the blank edge: mid-thickness points of the columns
-      // that start at (L, 0), (0, W) and (L, W), measured towards the cup
-      // axis x = y = 0.
-      const auto &vertices  = triangulation.get_vertices();
-      const auto  mid_point = [&](const unsigned int i, const unsigned int j)
-      {
-        const auto &ends
-          = column_end_vertices[i + j * (geometry.elements_along_x + 1)];
-        return Point<3>(0.5 * (vertices[ends[0]] + vertices[ends[1]]));
-      };
-      const unsigned int nx     = geometry.elements_along_x;
-      const unsigned int ny     = geometry.elements_along_y;
-      const Point<3>     corner = mid_point(nx, ny);
-      draw_in_file.add_row({load,
-                            geometry.length - mid_point(nx, 0)[0],
-                            geometry.width - mid_point(0, ny)[1],
-                            std::hypot(geometry.length, geometry.width)
-                              - std::hypot(corner[0], corner[1])});
     }
 
 

@@ -32,6 +32,7 @@
 #include <deepdraw/problem/contact_coupling.h>
 #include <deepdraw/problem/prescribed_displacements.h>
 #include <deepdraw/problem/process_parameters.h>
+#include <deepdraw/problem/process_tables.h>
 #include <deepdraw/solver/increment_control.h>
 #include <deepdraw/solver/linear_solver.h>
 #include <deepdraw/solver/newton_increment.h>
@@ -196,9 +197,6 @@ namespace deepdraw
       write_vtu(double load);
       void
       write_increment_tables(double load);
-      // punch_force.csv and draw_in.csv rows (runs with tools).
-      void
-      write_process_tables(double load);
       // thickness_OX/OD_<travel>mm.csv at a requested travel.
       void
       write_thickness_profiles(double travel);
@@ -295,15 +293,9 @@ namespace deepdraw
       unsigned int                   output_step      = 0;
       unsigned int                   increment_number = 0;
 
-      // Square-cup tables (doc/user_guide.md §3): the tool named "punch" and the
-      // unit direction of its motion, the first force-controlled tool
-      // (invalid_unsigned_int: none), the travels of the thickness
-      // profiles within the run.
-      io::CsvFile         punch_force_file;
-      io::CsvFile         draw_in_file;
-      unsigned int        punch_tool  = numbers::invalid_unsigned_int;
-      unsigned int        holder_tool = numbers::invalid_unsigned_int;
-      Tensor<1, 3>        punch_direction;
+      // punch_force.csv, draw_in.csv (runs with tools), and the travels
+      // of the thickness profiles within the run.
+      ProcessTables       process_tables;
       std::vector<double> profile_travels;
     };
   } // namespace problem

@@ -1,0 +1,77 @@
+// The forming-process tables (doc/user_guide.md §3), a component declared in
+// `subsection Process tables`: which tool is the punch and which the blank
+// holder (punch_force.csv), and where the draw-in of the blank edge is
+// measured (draw_in.csv).
+#ifndef deepdraw_problem_process_tables_h
+#define deepdraw_problem_process_tables_h
+
+#include <array>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+#include <deepdraw/io/csv_file.h>
+#include <deepdraw/problem/blank_geometry.h>
+#include <deepdraw/problem/contact_coupling.h>
+#include <string>
+#include <vector>
+
+namespace deepdraw
+{
+  namespace problem
+  {
+    using namespace dealii;
+
+    class ProcessTables
+    {
+    public:
+      static void
+      declare_parameters(ParameterHandler &prm);
+      // Throws InputError naming the parameter on a malformed entry.
+      void
+      parse_parameters(ParameterHandler &prm, const BlankGeometry &geometry);
+
+      // After the tools and the mesh exist: finds the punch and the holder
+      // (InputError if a tool named in the prm does not exist), the punch
+      // direction over the run (to final_load), and the through-thickness
+      // column of each draw-in point (the one starting nearest to it).
+      void
+      set_up(const ContactCoupling                          &contact,
+             double                                          final_load,
+             const std::vector<Point<3>>                    &initial_vertices,
+             const std::vector<std::array<unsigned int, 2>> &column_ends);
+
+      // Opens the tables in directory (runs with tools only).
+      void
+      open(const std::string &directory);
+      // One row of each table at the converged load; vertices: the
+      // current positions.
+      void
+      write(double                       load,
+            const ContactCoupling       &contact,
+            const std::vector<Point<3>> &vertices);
+
+    private:
+      struct DrawInPoint
+      {
+        std::string name;
+        Point<2>    requested;
+        // Bottom and top vertex of its column, and the column's initial
+        // distance from the cup axis x = y = 0 at mid-thickness.
+        std::array<unsigned int, 2> column_ends{};
+        double                      initial_radius = 0.;
+      };
+
+      std::string              punch_name  = "punch";
+      std::string              holder_name = "";
+      std::vector<DrawInPoint> draw_in_points;
+
+      bool         tables_wanted = false;
+      unsigned int punch_tool    = numbers::invalid_unsigned_int;
+      unsigned int holder_tool   = numbers::invalid_unsigned_int;
+      Tensor<1, 3> punch_direction;
+      io::CsvFile  punch_force_file;
+      io::CsvFile  draw_in_file;
+    };
+  } // namespace problem
+} // namespace deepdraw
+
+#endif
