@@ -1,0 +1,228 @@
+// ContactCoupling, part 1: the tool slots `Contact/Tool 1..4` (their
+// parameters) and the tools they make (square-cup builder or tool files);
+// the pairs, their assembly and the holder equation are in
+// contact_coupling.cc.
+#include <deal.II/base/utilities.h>
+#include <deepdraw/geometry/tool_file.h>
+#include <deepdraw/io/input_error.h>
+#include <deepdraw/problem/contact_coupling.h>
+#include <fstream>
+
+namespace deepdraw
+{
+  namespace problem
+  {
+    namespace
+    {
+      std::string
+      slot_name(const unsigned int slot)
+      {
+        return "Tool " + std::to_string(slot + 1);
+      }
+
+      Tensor<1, 3>
+      parse_direction(const std::string &text, const std::string &parameter)
+      {
+        const std::vector<std::string> parts
+          = Utilities::split_string_list(text, ',');
+        Tensor<1, 3> direction;
+        try
+        {
+          if (parts.size() != 3)
+            throw std::invalid_argument("count");
+          for (unsigned int d = 0; d < 3; ++d)
+            direction[d] = Utilities::string_to_double(parts[d]);
+        }
+        catch (...)
+        {
+          throw InputError(parameter + " = '" + text
+                           + "': expected three numbers 'ax, ay, az'");
+        }
+        if (!(direction.norm() > 0.))
+          throw InputError(parameter + " = '" + text
+                           + "': the direction must not be zero");
+        return direction / direction.norm();
+      }
+
+      std::shared_ptr<FunctionParser<1>>
+      parse_function_of_load(const std::string &text,
+                             const unsigned int n_components,
+                             const std::string &parameter)
+      {
+        auto function = std::make_shared<FunctionParser<1>>(n_components);
+        try
+        {
+          function->initialize("s,t",
+                               text,
+                               std::map<std::string, double>(),
+                               /*time_dependent=*/true);
+          function->set_time(0.);
+          Vector<double> values(n_components);
+          function->vector_value(Point<1>(), values);
+        }
+        catch (...)
+        {
+          throw InputError(parameter + " = '" + text + "': expected "
+                           + std::to_string(n_components)
+                           + " expression(s) of the load t separated by "
+                             "';'");
+        }
+        return function;
+      }
+
+    } // namespace
+
+
+    void
+    ContactCoupling::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Contact");
+      contact::ContactParameters::declare_parameters(prm);
+      prm.declare_entry("Search distance",
+                        "2",
+                        Patterns::Double(0.),
+                        "Nodes farther than this from a tool (mm) are not "
+                        "projected onto it and count as open.");
+      for (unsigned int slot = 0; slot < n_tool_slots; ++slot)
+      {
+        prm.enter_subsection(slot_name(slot));
+        prm.declare_entry("Name",
+                          "",
+                          Patterns::Anything(),
+                          "Name of the tool; an empty name leaves the slot "
+                          "unused.");
+        prm.declare_entry("Geometry",
+                          "file",
+                          Patterns::Selection("file|square cup punch|"
+                                              "square cup die|"
+                                              "square cup blank holder"),
+                          "Where the tool surface comes from: a tool file "
+                          "(see doc/tool_files.md) or one of the square-cup "
+                          "tools built from subsection Tools.");
+        prm.declare_entry("File",
+                          "",
+                          Patterns::Anything(),
+                          "Tool file (Geometry = file), relative to the "
+                          "directory of the parameter file.");
+        prm.declare_entry("Sheet surface",
+                          "top",
+                          Patterns::Selection("top|bottom"),
+                          "Surface of the sheet the tool acts on: every "
+                          "node of it forms a contact pair with the tool.");
+        prm.declare_entry("Control",
+                          "displacement",
+                          Patterns::Selection("displacement|force"),
+                          "'displacement': the tool follows Translation; "
+                          "'force': its position along Force direction is "
+                          "an unknown such that the contact forces on it "
+                          "add up to Process/Blank holder force.");
+        prm.declare_entry("Translation",
+                          "0; 0; 0",
+                          Patterns::Anything(),
+                          "Displacement control: translation of the tool "
+                          "from its file position as three expressions of "
+                          "the load t separated by ';' (mm).");
+        prm.declare_entry("Force direction",
+                          "0, 0, -1",
+                          Patterns::Anything(),
+                          "Force control: axis along which the tool moves "
+                          "and presses on the sheet.");
+        prm.leave_subsection();
+      }
+      prm.leave_subsection();
+    }
+
+
+    void
+    ContactCoupling::parse_parameters(ParameterHandler  &prm,
+                                      const std::string &prm_directory,
+                                      const std::string &blank_holder_force)
+    {
+      // Checked even without a force-controlled tool: a bad expression is
+      // an input error wherever it is.
+      const std::shared_ptr<FunctionParser<1>> holder_force
+        = parse_function_of_load(blank_holder_force,
+                                 1,
+                                 "Process/Blank holder force");
+      prm.enter_subsection("Contact");
+      parameters.parse_parameters(prm);
+      search_distance = prm.get_double("Search distance");
+      definitions.clear();
+      for (unsigned int slot = 0; slot < n_tool_slots; ++slot)
+      {
+        prm.enter_subsection(slot_name(slot));
+        const std::string prefix = "Contact/" + slot_name(slot) + "/";
+        ToolDefinition    tool;
+        tool.name = Utilities::trim(prm.get("Name"));
+        if (!tool.name.empty())
+        {
+          tool.geometry = prm.get("Geometry");
+          tool.file     = Utilities::trim(prm.get("File"));
+          if (tool.geometry == "file")
+          {
+            if (tool.file.empty())
+              throw InputError(prefix
+                               + "File: a tool file is needed when "
+                                 "Geometry = file");
+            if (tool.file[0] != '/')
+              tool.file = prm_directory + "/" + tool.file;
+            if (!std::ifstream(tool.file))
+              throw InputError(prefix
+                               + "File: cannot open the tool "
+                                 "file '"
+                               + tool.file + "'");
+          }
+          tool.sheet_face       = prm.get("Sheet surface") == "top" ? 5 : 4;
+          tool.force_controlled = prm.get("Control") == "force";
+          tool.translation      = parse_function_of_load(prm.get("Translation"),
+                                                    3,
+                                                    prefix + "Translation");
+          tool.axis             = parse_direction(prm.get("Force direction"),
+                                      prefix + "Force direction");
+          tool.force            = holder_force;
+          definitions.push_back(tool);
+        }
+        prm.leave_subsection();
+      }
+      prm.leave_subsection();
+      law = std::make_unique<contact::AlartCurnierLaw>(
+        parameters.friction_coefficient);
+    }
+
+
+    bool
+    ContactCoupling::active() const
+    {
+      return !definitions.empty();
+    }
+
+
+    void
+    ContactCoupling::create_tools(
+      const geometry::SquareCupToolParameters &square_cup,
+      const double                             sheet_thickness)
+    {
+      tool_list.clear();
+      std::vector<geometry::RigidTool> square_cup_tools;
+      for (const ToolDefinition &definition : definitions)
+      {
+        geometry::RigidTool tool;
+        if (definition.geometry == "file")
+          tool = geometry::read_tool_file(definition.file);
+        else
+        {
+          if (square_cup_tools.empty())
+            square_cup_tools
+              = geometry::build_square_cup_tools(square_cup, sheet_thickness);
+          const unsigned int index
+            = definition.geometry == "square cup punch"
+                ? 0
+                : (definition.geometry == "square cup die" ? 1 : 2);
+          tool = square_cup_tools[index];
+        }
+        tool.set_rigid_motion(unit_symmetric_tensor<3>(), Tensor<1, 3>());
+        tool_list.push_back(tool);
+      }
+    }
+  } // namespace problem
+} // namespace deepdraw
