@@ -26,7 +26,7 @@ for solver in $solvers; do
   cat > "$run/benchmark.prm" <<PRM
 include $source_dir/prm/square_cup.prm
 subsection Process
-  set Punch travel = $travel
+  set Final load = $travel
 end
 subsection Linear solver
   set Type = $solver

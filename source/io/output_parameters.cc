@@ -29,12 +29,12 @@ namespace deepdraw
       prm.declare_entry("Thickness profile travels",
                         "15, 20",
                         Patterns::List(Patterns::Double(0.)),
-                        "Punch travels (values of t, mm) at which the "
+                        "Final loads (values of t, mm) at which the "
                         "thickness strain along OX and OD is written "
                         "(thickness_OX_<travel>mm.csv, "
                         "thickness_OD_<travel>mm.csv; runs with tools "
                         "only); increments land on them, travels beyond "
-                        "Process/Punch travel are ignored.");
+                        "Process/Final load are ignored.");
       prm.leave_subsection();
     }
 

@@ -61,7 +61,7 @@ namespace deepdraw
                                   geometry.symmetry_plane_x,
                                   geometry.symmetry_plane_y);
       increment_parameters.parse_parameters(prm);
-      increment_parameters.final_load = process_parameters.punch_travel;
+      increment_parameters.final_load = process_parameters.final_load;
       newton_parameters.parse_parameters(prm);
       linear_solver_parameters.parse_parameters(prm);
       output_parameters.parse_parameters(prm);
@@ -73,7 +73,7 @@ namespace deepdraw
       // Thickness profiles are square-cup tables: runs with tools only.
       if (contact.active())
         for (const double travel : output_parameters.thickness_profile_travels)
-          if (travel <= process_parameters.punch_travel * (1. + 1e-12))
+          if (travel <= process_parameters.final_load * (1. + 1e-12))
             profile_travels.push_back(travel);
       std::sort(profile_travels.begin(), profile_travels.end());
       profile_travels.erase(std::unique(profile_travels.begin(),
@@ -89,7 +89,7 @@ namespace deepdraw
         = std::make_unique<solver::LinearSolver>(linear_solver_parameters);
       setup_system();
       process_tables.set_up(contact,
-                            process_parameters.punch_travel,
+                            process_parameters.final_load,
                             initial_vertices,
                             column_end_vertices);
     }

@@ -8,12 +8,13 @@ namespace deepdraw
     ProcessParameters::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Process");
-      prm.declare_entry("Punch travel",
+      prm.declare_entry("Final load",
                         "1",
                         Patterns::Double(0.),
                         "End of the run: final value of the load parameter "
-                        "t, which starts at 0 (mm). In the square cup t is "
-                        "the punch travel (punch Translation = 0; 0; -t); "
+                        "t, which starts at 0 (in the unit the prm gives t; "
+                        "mm of punch travel for the square cup, where t is "
+                        "the punch travel: punch Translation = 0; 0; -t); "
                         "in cases without a punch it is the end value of "
                         "the t used in their prescribed displacements and "
                         "tool translations.");
@@ -32,7 +33,7 @@ namespace deepdraw
     ProcessParameters::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Process");
-      punch_travel       = prm.get_double("Punch travel");
+      final_load         = prm.get_double("Final load");
       blank_holder_force = prm.get("Blank holder force");
       prm.leave_subsection();
     }

@@ -63,7 +63,7 @@ subsection Boundary conditions
          << drag << R"(*max(t - 1, 0)
 end
 subsection Process
-  set Punch travel = 2
+  set Final load = 2
 end
 subsection Load stepping
   set Initial increment = 0.25

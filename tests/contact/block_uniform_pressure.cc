@@ -59,7 +59,7 @@ subsection Boundary conditions
   set Prescribed displacements = zmax: uz = -1e-4*t
 end
 subsection Process
-  set Punch travel = 1
+  set Final load = 1
 end
 subsection Load stepping
   set Initial increment = 0.5

@@ -68,7 +68,7 @@ namespace
          "= xmin: ux = 0; xmin: uy = 0; xmin: uz = 0; xmax: uz = "
       << delta
       << "*t\nend\n"
-         "subsection Process\n  set Punch travel = 1\nend\n"
+         "subsection Process\n  set Final load = 1\nend\n"
          "subsection Load stepping\n  set Initial increment = 1\n"
          "  set Maximum increment = 1\nend\n"
          "subsection Newton\n  set Force tolerance = 1e-8\n"

@@ -79,7 +79,7 @@ namespace
              "  set Prescribed displacements = "
            + conditions
            + "\nend\n"
-             "subsection Process\n  set Punch travel = "
+             "subsection Process\n  set Final load = "
            + std::to_string(final_load)
            + "\nend\n"
              "subsection Load stepping\n"

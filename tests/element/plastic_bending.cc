@@ -88,7 +88,7 @@ namespace
              << "*t)^4/120 - (" << theta << "*t)^6/5040) + sin(" << theta
              << "*t)*(z - " << thickness / 2.
              << ")\nend\n"
-                "subsection Process\n  set Punch travel = 1\nend\n"
+                "subsection Process\n  set Final load = 1\nend\n"
                 "subsection Load stepping\n  set Initial increment = 0.1\n"
                 "  set Maximum increment = 0.1\nend\n"
                 "subsection Newton\n  set Force tolerance = 1e-11\n"

@@ -33,7 +33,7 @@ namespace
              "subsection Boundary conditions\n"
              "  set Prescribed displacements = zmin: uz = 0; ymin: uy = 0; "
              "xmax: ux = 0.05*t; xmax: uz = 0.2*t*(x-1)\nend\n"
-             "subsection Process\n  set Punch travel = "
+             "subsection Process\n  set Final load = "
            + std::to_string(final_load)
            + "\nend\n"
              "subsection Load stepping\n  set Initial increment = 0.25\n"

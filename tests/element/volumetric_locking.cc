@@ -89,7 +89,7 @@ namespace
              "subsection Boundary conditions\n"
              "  set Prescribed displacements = ymin: uy = 0; ymax: uy = 0; "
              "xmin: ux = 0; xmin: uz = 0; xmax: ux = 0.06*t*(z - 0.5)\nend\n"
-             "subsection Process\n  set Punch travel = "
+             "subsection Process\n  set Final load = "
            + std::to_string(final_load)
            + "\nend\n"
              "subsection Load stepping\n  set Initial increment = 0.05\n"

@@ -182,7 +182,7 @@ namespace
          << "*t)-1)\n"
          << "end\n"
          << "subsection Process\n"
-         << "  set Punch travel = 1\n"
+         << "  set Final load = 1\n"
          << "end\n"
          << "subsection Load stepping\n"
          << "  set Initial increment = 0.02\n"

@@ -17,7 +17,7 @@ namespace deepdraw
       std::string output_directory = "output";
       double      output_interval  = 0.;
       bool        write_vtu        = true;
-      // Punch travels (mm) at which the thickness profiles are written.
+      // Final loads (mm) at which the thickness profiles are written.
       std::vector<double> thickness_profile_travels = {15., 20.};
 
       static void

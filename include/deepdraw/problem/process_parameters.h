@@ -1,5 +1,6 @@
-// The forming process (subsection Process, doc/user_guide.md): how far the punch
-// travels and how hard the blank holder presses.
+// The forming process (subsection Process, doc/user_guide.md): where the load
+// parameter t ends (the punch travel in the square cup) and how hard the
+// blank holder presses.
 #ifndef deepdraw_problem_process_parameters_h
 #define deepdraw_problem_process_parameters_h
 
@@ -14,8 +15,8 @@ namespace deepdraw
 
     struct ProcessParameters
     {
-      // End value of the load parameter t (mm of punch travel).
-      double punch_travel = 1.;
+      // End value of the load parameter t (Process/Final load).
+      double final_load = 1.;
       // Force of every force-controlled tool as an expression of t (N);
       // ContactCoupling parses and checks it.
       std::string blank_holder_force = "0";

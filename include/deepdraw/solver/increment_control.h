@@ -16,7 +16,7 @@ namespace deepdraw
     struct IncrementControlParameters
     {
       // End of the run; not read from subsection Load stepping but set by
-      // the owner (Process/Punch travel).
+      // the owner (Process/Final load).
       double       final_load        = 1.;
       double       initial_increment = 0.1;
       double       minimum_increment = 1e-6;
