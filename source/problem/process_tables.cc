@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <deal.II/base/utilities.h>
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/problem/process_tables.h>
 #include <sstream>
@@ -41,27 +42,13 @@ namespace deepdraw
     }
 
 
-    namespace
-    {
-      std::string
-      trimmed(const std::string &text)
-      {
-        const auto first = text.find_first_not_of(" \t");
-        if (first == std::string::npos)
-          return "";
-        const auto last = text.find_last_not_of(" \t");
-        return text.substr(first, last - first + 1);
-      }
-    } // namespace
-
-
     void
     ProcessTables::parse_parameters(ParameterHandler    &prm,
                                     const BlankGeometry &geometry)
     {
       prm.enter_subsection("Process tables");
-      punch_name               = trimmed(prm.get("Punch tool"));
-      holder_name              = trimmed(prm.get("Blank holder tool"));
+      punch_name               = Utilities::trim(prm.get("Punch tool"));
+      holder_name              = Utilities::trim(prm.get("Blank holder tool"));
       const std::string points = prm.get("Draw-in points");
       prm.leave_subsection();
 
@@ -69,7 +56,7 @@ namespace deepdraw
       const auto        coordinate
         = [&](const std::string &text, const std::string &entry)
       {
-        const std::string word = trimmed(text);
+        const std::string word = Utilities::trim(text);
         if (word == "length")
           return geometry.length;
         if (word == "width")
@@ -94,18 +81,18 @@ namespace deepdraw
       std::string        entry;
       while (std::getline(list, entry, ';'))
       {
-        entry = trimmed(entry);
+        entry = Utilities::trim(entry);
         if (entry.empty())
           continue;
         const auto colon = entry.find(':');
         const auto comma
           = entry.find(',', colon == std::string::npos ? 0 : colon);
         if (colon == std::string::npos || comma == std::string::npos
-            || trimmed(entry.substr(0, colon)).empty())
+            || Utilities::trim(entry.substr(0, colon)).empty())
           throw InputError(where + "'" + entry
                            + "' is not of the form 'NAME: X, Y'");
         DrawInPoint point;
-        point.name = trimmed(entry.substr(0, colon));
+        point.name = Utilities::trim(entry.substr(0, colon));
         point.requested
           = Point<2>(coordinate(entry.substr(colon + 1, comma - colon - 1),
                                 entry),

@@ -23,6 +23,7 @@
 // Two cases: an elastic one (|A| = 1e-4), also compared with small-strain
 // Hooke's law, and a plastic one with 10 % strains and a rotation, where the
 // SRI and full stresses must coincide too (the SRI correction is zero).
+#include "element/element_test_tools.h"
 #include "test_utilities.h"
 
 #include <array>
@@ -188,19 +189,15 @@ namespace
   std::vector<Tensor<2, 3>>
   stretch_and_turn(const std::string &integration, const double final_load)
   {
-    const std::string                stretch = "(1 + 1e-3*(t<0.5 ? 2*t : 1))";
-    const std::string                angle   = "(t<0.5 ? 0 : (t-0.5)*3.14159265358979324)";
+    const std::string stretch = "(1 + 1e-3*(t<0.5 ? 2*t : 1))";
+    const std::string angle   = "(t<0.5 ? 0 : (t-0.5)*3.14159265358979324)";
     const std::array<std::string, 3> u
       = {{stretch + "*x*cos" + angle + " - y*sin" + angle + " - x",
           stretch + "*x*sin" + angle + " + y*cos" + angle + " - y",
           "0"}};
-    ParameterHandler prm;
-    problem::FormingProblem::declare_parameters(prm);
-    prm.parse_input_from_string(prm_text(u, integration, 0.05, final_load));
-    problem::FormingProblem forming_problem(prm);
-    forming_problem.run();
-    std::cout.precision(6); // run() leaves it at 3
-    return forming_problem.cell_average_cauchy_stress();
+    return element_test::run_forming_problem(
+             prm_text(u, integration, 0.05, final_load))
+      ->cell_average_cauchy_stress();
   }
 } // namespace
 

@@ -37,6 +37,7 @@
 //   log r_{k+1} / log r_k >= 1.8 over the iterations with r < 1e-2 (with
 //   the default enhanced tolerance 1e-4; 1e-12 gives the same iterates to
 //   three digits).
+#include "element/element_test_tools.h"
 #include "test_utilities.h"
 
 #include <deal.II/base/mpi.h>
@@ -95,29 +96,19 @@ namespace
                 "  set Correction tolerance = 1e-11\nend\n"
                 "subsection Output\n  set Output directory = bending-output\n"
                 "  set Write VTU = false\nend\n";
-    ParameterHandler prm;
-    problem::FormingProblem::declare_parameters(prm);
-    prm.parse_input_from_string(prm_text.str());
-    problem::FormingProblem forming_problem(prm);
-    forming_problem.run();
-    std::cout.precision(6); // run() leaves it at 3
-
-    const auto &X = forming_problem.get_initial_vertices();
-    const auto &u = forming_problem.get_total_displacement();
-    const auto &f = forming_problem.get_internal_force();
+    const auto forming_problem
+      = element_test::run_forming_problem(prm_text.str());
+    const auto &X = forming_problem->get_initial_vertices();
+    const auto &u = forming_problem->get_total_displacement();
+    const auto &f = forming_problem->get_internal_force();
     // Current position of the vertices on y = 0 by initial (x, z).
     std::map<std::pair<long, long>, Point<3>> position;
     std::vector<std::pair<double, Point<3>>>  end_face; // (f_x, x)
-    std::vector<bool>                         seen(X.size(), false);
-    for (const auto &cell :
-         forming_problem.get_dof_handler().active_cell_iterators())
-      for (const unsigned int v : cell->vertex_indices())
+    element_test::for_each_vertex(
+      *forming_problem,
+      [&](const auto &cell, const unsigned int v, const unsigned int vertex)
       {
-        const unsigned int vertex = cell->vertex_index(v);
-        if (seen[vertex])
-          continue;
-        seen[vertex] = true;
-        Point<3> x   = X[vertex];
+        Point<3> x = X[vertex];
         for (unsigned int c = 0; c < 3; ++c)
           x[c] += u[cell->vertex_dof_index(v, c)];
         if (std::abs(X[vertex][1]) < 1e-9)
@@ -126,7 +117,7 @@ namespace
             = x;
         if (std::abs(X[vertex][0] - length) < 1e-9)
           end_face.emplace_back(f[cell->vertex_dof_index(v, 0)], x);
-      }
+      });
     // Section rotation and mid-point at initial x0 (mm).
     const auto section = [&](const double x0, Point<3> &middle)
     {
@@ -153,7 +144,7 @@ namespace
     double moment = 0.;
     for (const auto &[fx, x] : end_face)
       moment += fx * (x[2] - z_centre);
-    return {angle / arc, moment, forming_problem.last_residuals()};
+    return {angle / arc, moment, forming_problem->last_residuals()};
   }
 
 
