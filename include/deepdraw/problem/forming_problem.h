@@ -1,9 +1,11 @@
 // The forming problem: owns the blank's mesh, the degrees of freedom, the
 // quadrature-point history, and drives the increments (doc/architecture.md).
 //
-// Unknowns are ordered in blocks: displacements first, then (once the
-// contact issue lands) the contact forces and the tool positions, all in one
-// unsymmetric system solved by a direct solver.
+// Unknowns are ordered in blocks: displacements first, then the contact
+// forces and the tool positions of force-controlled tools, all in one
+// unsymmetric system solved by a direct solver (doc/theory.md §7). One
+// increment's Newton iterations run in solver::NewtonIncrement through the
+// solver::NewtonSystem this class implements.
 #ifndef deepdraw_problem_forming_problem_h
 #define deepdraw_problem_forming_problem_h
 
