@@ -1,6 +1,6 @@
 // The assembled tangent is the exact derivative of the assembled residual
-// (doc/theory_material.md): compare it with central finite differences on a small
-// distorted mesh, in an elastic and in a plastic state, for every element
+// (doc/theory_material.md): compare it with central finite differences on a
+// small distorted mesh, in an elastic and in a plastic state, for every element
 // technology, after a few increments with rotation. With incompatible modes
 // the residual is the condensed one (enhanced parameters solved in the
 // element), so this also checks the static condensation.
