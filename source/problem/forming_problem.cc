@@ -202,23 +202,25 @@ namespace deepdraw
       system_matrix.reinit(sparsity_pattern);
       system_rhs.reinit(n_unknowns);
       internal_force.reinit(n_unknowns);
-      total_displacement.reinit(dof_handler.n_dofs());
+      state.total_displacement.reinit(dof_handler.n_dofs());
       newton_unknowns.reinit(n_unknowns);
-      converged_solution.reinit(n_unknowns);
+      state.converged_solution.reinit(n_unknowns);
 
       // Initial state: unstressed, material axes rotated about z by
       // Material/Rolling direction angle.
       QuadraturePointHistory initial_point;
       initial_point.material_axes = material_parameters.initial_material_axes();
-      history.assign(triangulation.n_active_cells() * fe::n_weighted_points,
-                     initial_point);
-      trial_history = history;
-      enhanced_parameters.assign(
+      state.history.assign(triangulation.n_active_cells()
+                             * fe::n_weighted_points,
+                           initial_point);
+      trial_history  = state.history;
+      state.vertices = triangulation.get_vertices();
+      state.enhanced_parameters.assign(
         fe::n_enhanced_parameters(element_parameters.technology) > 0
           ? triangulation.n_active_cells()
           : 0,
         fe::EnhancedParameters());
-      trial_enhanced_parameters = enhanced_parameters;
+      trial_enhanced_parameters = state.enhanced_parameters;
 
       reaction_faces.clear();
       for (const PrescribedDisplacement &entry : prescribed.entries)
@@ -269,14 +271,14 @@ namespace deepdraw
     const Vector<double> &
     FormingProblem::get_newton_unknowns() const
     {
-      return converged_solution;
+      return state.converged_solution;
     }
 
 
     void
     FormingProblem::start_enhanced_parameters(const double ratio)
     {
-      trial_enhanced_parameters = enhanced_parameters;
+      trial_enhanced_parameters = state.enhanced_parameters;
       for (fe::EnhancedParameters &cell : trial_enhanced_parameters)
         cell.scale(ratio);
     }
@@ -285,13 +287,14 @@ namespace deepdraw
     void
     FormingProblem::commit_increment()
     {
-      history             = trial_history;
-      enhanced_parameters = trial_enhanced_parameters;
+      state.history             = trial_history;
+      state.enhanced_parameters = trial_enhanced_parameters;
       for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
-        total_displacement[i] += newton_unknowns[i];
-      previous_converged_solution = converged_solution;
-      converged_solution          = newton_unknowns;
-      last_load_increment         = target_load - start_load;
+        state.total_displacement[i] += newton_unknowns[i];
+      state.previous_converged_solution = state.converged_solution;
+      state.converged_solution          = newton_unknowns;
+      state.last_load_increment         = target_load - start_load;
+      state.load                        = target_load;
       if (contact.active())
         contact.commit(newton_unknowns);
       // Updated Lagrangian: the converged configuration becomes the
@@ -306,6 +309,7 @@ namespace deepdraw
               cell->vertex(v)[c]
                 += newton_unknowns[vertex_dofs[cell->vertex_index(v)][c]];
           }
+      state.vertices = triangulation.get_vertices();
       update_cell_geometry();
       compute_thickness();
     }
@@ -391,8 +395,8 @@ namespace deepdraw
           std::cout << "  load " << format_load(new_load) << ": "
                     << solver::describe(outcome)
                     << ", cutting the increment back" << std::endl;
-          trial_history             = history;
-          trial_enhanced_parameters = enhanced_parameters;
+          trial_history             = state.history;
+          trial_enhanced_parameters = state.enhanced_parameters;
           if (!control.cut_back())
           {
             const bool too_small = control.next_increment()
@@ -415,7 +419,7 @@ namespace deepdraw
         const unsigned int cut_backs = control.cut_backs_of_current_increment();
         control.accept(iterations);
         commit_increment();
-        ++increment_number;
+        ++state.increment_number;
 
         Timer      output_timer;
         const bool at_output
@@ -438,7 +442,7 @@ namespace deepdraw
                                           ? 0.
                                           : contact_residual_history.back();
 
-        statistics_file.add_row({double(increment_number),
+        statistics_file.add_row({double(state.increment_number),
                                  new_load,
                                  new_load - old_load,
                                  double(iterations),
@@ -457,12 +461,12 @@ namespace deepdraw
                                  sheet_volume()});
 
         std::ostringstream line;
-        line << "increment " << std::setw(4) << increment_number << "  load "
-             << std::setw(9) << format_load(new_load) << "  iterations "
-             << std::setw(2) << iterations << "  cut-backs " << cut_backs
-             << std::scientific << std::setprecision(2) << "  residuals "
-             << force_residual << " " << contact_residual << std::defaultfloat
-             << "  plastic points " << n_plastic_points;
+        line << "increment " << std::setw(4) << state.increment_number
+             << "  load " << std::setw(9) << format_load(new_load)
+             << "  iterations " << std::setw(2) << iterations << "  cut-backs "
+             << cut_backs << std::scientific << std::setprecision(2)
+             << "  residuals " << force_residual << " " << contact_residual
+             << std::defaultfloat << "  plastic points " << n_plastic_points;
         if (contact.active())
           line << "  stick/slip " << contact.n_stick() << "/"
                << contact.n_slip();
@@ -476,7 +480,7 @@ namespace deepdraw
       }
       std::cout << "deepdraw: finished at load "
                 << format_load(control.current_load()) << " after "
-                << increment_number << " increments in "
+                << state.increment_number << " increments in "
                 << run_timer.wall_time() << " s; results in "
                 << output_parameters.output_directory << std::endl;
     }
@@ -492,7 +496,7 @@ namespace deepdraw
     const Vector<double> &
     FormingProblem::get_total_displacement() const
     {
-      return total_displacement;
+      return state.total_displacement;
     }
 
 
@@ -503,10 +507,17 @@ namespace deepdraw
     }
 
 
+    const SimulationState &
+    FormingProblem::get_state() const
+    {
+      return state;
+    }
+
+
     const std::vector<QuadraturePointHistory> &
     FormingProblem::get_history() const
     {
-      return history;
+      return state.history;
     }
 
 

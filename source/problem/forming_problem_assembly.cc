@@ -77,7 +77,7 @@ namespace deepdraw
         const fe::ElementStatus status
           = element->evaluate(cell_geometry[index],
                               cell_du,
-                              &history[first_point],
+                              &state.history[first_point],
                               &trial_history[first_point],
                               trial_enhanced_parameters.empty()
                                 ? scratch.no_enhanced_parameters

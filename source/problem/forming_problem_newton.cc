@@ -35,7 +35,7 @@ namespace deepdraw
       // from their converged values (the tangent predictor's start).
       const auto start_from_converged_state = [&]()
       {
-        newton_unknowns = converged_solution;
+        newton_unknowns = state.converged_solution;
         for (types::global_dof_index i = 0; i < n_u; ++i)
           newton_unknowns[i] = 0.;
       };
@@ -43,9 +43,9 @@ namespace deepdraw
       // The element-internal unknowns start as du does: from rest, or the
       // last increment scaled (extrapolation predictor).
       const bool extrapolate = newton_parameters.predictor == "extrapolation"
-                               && last_load_increment > 0.;
+                               && state.last_load_increment > 0.;
       start_enhanced_parameters(
-        extrapolate ? (new_load - old_load) / last_load_increment : 0.);
+        extrapolate ? (new_load - old_load) / state.last_load_increment : 0.);
       residual_history.clear();
       contact_residual_history.clear();
       contact_changes  = 0;
@@ -57,14 +57,14 @@ namespace deepdraw
       bool assembled = false;
       if (extrapolate)
       {
-        const double ratio = (new_load - old_load) / last_load_increment;
+        const double ratio = (new_load - old_load) / state.last_load_increment;
         for (types::global_dof_index i = 0; i < newton_unknowns.size(); ++i)
-          newton_unknowns[i] = i < n_u
-                                 ? ratio * converged_solution[i]
-                                 : converged_solution[i]
-                                     + ratio
-                                         * (converged_solution[i]
-                                            - previous_converged_solution[i]);
+          newton_unknowns[i]
+            = i < n_u ? ratio * state.converged_solution[i]
+                      : state.converged_solution[i]
+                          + ratio
+                              * (state.converged_solution[i]
+                                 - state.previous_converged_solution[i]);
         predictor_constraints.distribute(newton_unknowns);
         const IncrementOutcome status = assemble_at(newton_unknowns, false);
         if (status == IncrementOutcome::converged)
@@ -184,7 +184,7 @@ namespace deepdraw
       // increments (cut-backs) a 1e-6 mm correction of a slipping flange is
       // not a lack of convergence (doc/decisions.md D26).
       const types::global_dof_index n_u          = dof_handler.n_dofs();
-      Vector<double>                displacement = total_displacement;
+      Vector<double>                displacement = state.total_displacement;
       for (types::global_dof_index i = 0; i < n_u; ++i)
         displacement[i] += x[i];
       const double displacement_norm
@@ -198,7 +198,7 @@ namespace deepdraw
                                      const solver::ResidualMeasures &residuals,
                                      const double relative_correction)
     {
-      newton_file.add_row({double(increment_number + 1),
+      newton_file.add_row({double(state.increment_number + 1),
                            target_load,
                            double(iterations),
                            residuals.force,

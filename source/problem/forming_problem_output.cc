@@ -71,7 +71,7 @@ namespace deepdraw
       for (unsigned int cell = 0; cell < stress.size(); ++cell)
         for (unsigned int q = 0; q < fe::n_weighted_points; ++q)
           stress[cell]
-            += cauchy_stress(history[cell * fe::n_weighted_points + q])
+            += cauchy_stress(state.history[cell * fe::n_weighted_points + q])
                / double(fe::n_weighted_points);
       return stress;
     }
@@ -214,7 +214,7 @@ namespace deepdraw
       for (unsigned int cell = 0; cell < n_cells; ++cell)
         for (unsigned int q = 0; q < n_q; ++q)
         {
-          const QuadraturePointHistory &point = history[cell * n_q + q];
+          const QuadraturePointHistory &point = state.history[cell * n_q + q];
           const Tensor<2, 3>            sigma = cauchy_stress(point);
           const Tensor<2, 3>           &R     = point.material_axes;
           const Tensor<2, 3>            X
@@ -249,7 +249,7 @@ namespace deepdraw
           3,
           DataComponentInterpretation::component_is_part_of_vector);
       data_out.add_data_vector(dof_handler,
-                               total_displacement,
+                               state.total_displacement,
                                names,
                                interpretation);
       data_out.add_data_vector(scalar_dof_handler,

@@ -35,6 +35,7 @@
 #include <deepdraw/problem/prescribed_displacements.h>
 #include <deepdraw/problem/process_parameters.h>
 #include <deepdraw/problem/process_tables.h>
+#include <deepdraw/problem/simulation_state.h>
 #include <deepdraw/solver/increment_control.h>
 #include <deepdraw/solver/linear_solver.h>
 #include <deepdraw/solver/newton_increment.h>
@@ -113,6 +114,9 @@ namespace deepdraw
       cell_average_cauchy_stress() const;
       const std::vector<QuadraturePointHistory> &
       get_history() const;
+      // The committed state (what a restart or a mesh change carries).
+      const SimulationState &
+      get_state() const;
       // Sum of the internal forces over the dofs of a face (reaction).
       Tensor<1, 3>
       face_reaction(unsigned int boundary_id) const;
@@ -250,25 +254,21 @@ namespace deepdraw
       SparseMatrix<double> system_matrix;
       Vector<double>       system_rhs;
       Vector<double>       internal_force;
-      Vector<double>       total_displacement;
       // The Newton unknowns of the increment, [du | lambda | z]: the
       // displacement increment (first n_displacement_dofs entries), then
       // the contact forces and the tool positions (absolute values).
       Vector<double> newton_unknowns;
-      Vector<double> converged_solution;
-      // The converged unknowns before the last increment and that
-      // increment's load step (Newton/Predictor = extrapolation).
-      Vector<double> previous_converged_solution;
-      double         last_load_increment = 0.;
-      double         start_load          = 0.;
-      double         target_load         = 0.;
+      double         start_load  = 0.;
+      double         target_load = 0.;
 
-      std::vector<QuadraturePointHistory> history;
+      // What a restart or a mesh change must carry: committed history,
+      // enhanced parameters, displacement, last Newton unknowns, load.
+      SimulationState state;
+      // Trial values of the increment being solved (restored from state on
+      // a cut-back).
       std::vector<QuadraturePointHistory> trial_history;
-      // Element-internal unknowns per cell (incompatible modes; empty
-      // otherwise), committed and restored with the history.
-      std::vector<fe::EnhancedParameters> enhanced_parameters;
       std::vector<fe::EnhancedParameters> trial_enhanced_parameters;
+
 
       std::unique_ptr<solver::LinearSolver> linear_solver;
 
@@ -292,8 +292,7 @@ namespace deepdraw
       io::CsvFile                    reactions_file;
       io::CsvFile                    tools_file;
       std::vector<unsigned int>      reaction_faces;
-      unsigned int                   output_step      = 0;
-      unsigned int                   increment_number = 0;
+      unsigned int                   output_step = 0;
 
       // punch_force.csv, draw_in.csv (runs with tools), and the travels
       // of the thickness profiles within the run.

@@ -1,0 +1,170 @@
+// problem::SimulationState, the committed state of a run (doc/architecture.md):
+// after three plastic bending increments with incompatible modes (non-zero
+// stresses, back stresses, plastic strains, rotated material axes, enhanced
+// parameters and a moved mesh), write() and read() reproduce every field
+// bit for bit; a stream cut short, or one that is not a state, is rejected.
+#include "test_utilities.h"
+
+#include <deal.II/base/mpi.h>
+#include <deepdraw/problem/forming_problem.h>
+#include <sstream>
+
+using namespace dealii;
+using namespace deepdraw;
+
+namespace
+{
+  const char *prm_text = R"(
+subsection Geometry
+  set Length = 6
+  set Width = 1
+  set Thickness = 0.81
+  set Elements along x = 4
+  set Elements along y = 1
+  set Layers through thickness = 2
+  set Symmetry planes =
+  set Mesh distortion = 0.2
+end
+subsection Material
+  set Prager modulus = 1000
+end
+subsection Boundary conditions
+  set Prescribed displacements = xmin: ux = 0; xmin: uy = 0; xmin: uz = 0; xmax: ux = 0.1*t*(z - 0.405); xmax: uz = 0.2*t
+end
+subsection Process
+  set Final load = 0.3
+end
+subsection Load stepping
+  set Initial increment = 0.1
+  set Maximum increment = 0.1
+end
+subsection Output
+  set Output directory = state-test-output
+  set Write VTU = false
+end
+)";
+
+  bool
+  same(const Vector<double> &a, const Vector<double> &b)
+  {
+    if (a.size() != b.size())
+      return false;
+    for (unsigned int i = 0; i < a.size(); ++i)
+      if (!(a[i] == b[i]))
+        return false;
+    return true;
+  }
+} // namespace
+
+int
+main(int argc, char *argv[])
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  ParameterHandler                 prm;
+  problem::FormingProblem::declare_parameters(prm);
+  prm.parse_input_from_string(prm_text);
+  problem::FormingProblem forming_problem(prm);
+  forming_problem.run();
+  const problem::SimulationState &state = forming_problem.get_state();
+
+  // The state is not trivial (else the comparison proves little).
+  double largest_plastic_strain = 0., largest_enhanced = 0., axes_turn = 0.;
+  for (const auto &point : state.history)
+  {
+    largest_plastic_strain = std::max(largest_plastic_strain,
+                                      point.state.equivalent_plastic_strain);
+    axes_turn              = std::max(axes_turn,
+                         std::abs(point.material_axes[0][2]));
+  }
+  for (const auto &cell : state.enhanced_parameters)
+    for (const double value : cell.values)
+      largest_enhanced = std::max(largest_enhanced, std::abs(value));
+  deepdraw_test::check_true("plastic points (epbar " +
+                              std::to_string(largest_plastic_strain) + ")",
+                            largest_plastic_strain > 1e-3);
+  deepdraw_test::check_true("enhanced parameters are not zero",
+                            largest_enhanced > 0.);
+  deepdraw_test::check_true("material axes turned", axes_turn > 1e-4);
+  deepdraw_test::check_true("three increments, load 0.3",
+                            state.increment_number == 3
+                              && std::abs(state.load - 0.3) < 1e-12);
+
+  std::stringstream stream;
+  state.write(stream);
+  const std::string        image = stream.str();
+  problem::SimulationState copy;
+  std::istringstream       input(image);
+  copy.read(input);
+
+  bool vertices_same = copy.vertices.size() == state.vertices.size();
+  for (unsigned int v = 0; vertices_same && v < state.vertices.size(); ++v)
+    vertices_same = copy.vertices[v] == state.vertices[v];
+  bool history_same = copy.history.size() == state.history.size();
+  for (unsigned int q = 0; history_same && q < state.history.size(); ++q)
+    history_same
+      = copy.history[q].state.stress == state.history[q].state.stress
+        && copy.history[q].state.back_stress
+             == state.history[q].state.back_stress
+        && copy.history[q].state.equivalent_plastic_strain
+             == state.history[q].state.equivalent_plastic_strain
+        && copy.history[q].material_axes == state.history[q].material_axes;
+  bool enhanced_same
+    = copy.enhanced_parameters.size() == state.enhanced_parameters.size();
+  for (unsigned int c = 0; enhanced_same && c < state.enhanced_parameters.size();
+       ++c)
+    enhanced_same = copy.enhanced_parameters[c].values
+                      == state.enhanced_parameters[c].values
+                    && copy.enhanced_parameters[c].sensitivity
+                         == state.enhanced_parameters[c].sensitivity
+                    && copy.enhanced_parameters[c].evaluated_at
+                         == state.enhanced_parameters[c].evaluated_at
+                    && copy.enhanced_parameters[c].correction
+                         == state.enhanced_parameters[c].correction;
+  deepdraw_test::check_true("load, step, increment",
+                            copy.load == state.load
+                              && copy.last_load_increment
+                                   == state.last_load_increment
+                              && copy.increment_number
+                                   == state.increment_number);
+  deepdraw_test::check_true("vertices", vertices_same);
+  deepdraw_test::check_true("total displacement, Newton unknowns",
+                            same(copy.total_displacement,
+                                 state.total_displacement)
+                              && same(copy.converged_solution,
+                                      state.converged_solution)
+                              && same(copy.previous_converged_solution,
+                                      state.previous_converged_solution));
+  deepdraw_test::check_true("quadrature-point history", history_same);
+  deepdraw_test::check_true("enhanced parameters", enhanced_same);
+
+  // Cut short anywhere: rejected.
+  bool truncated_rejected = true;
+  for (const std::size_t length :
+       {std::size_t(0), std::size_t(10), image.size() / 2, image.size() - 1})
+  {
+    std::istringstream       cut(image.substr(0, length));
+    problem::SimulationState target;
+    try
+    {
+      target.read(cut);
+      truncated_rejected = false;
+    }
+    catch (const std::runtime_error &)
+    {}
+  }
+  deepdraw_test::check_true("a stream cut short is rejected",
+                            truncated_rejected);
+  std::istringstream       foreign("this is not a state, only text......");
+  problem::SimulationState target;
+  bool                     foreign_rejected = false;
+  try
+  {
+    target.read(foreign);
+  }
+  catch (const std::runtime_error &)
+  {
+    foreign_rejected = true;
+  }
+  deepdraw_test::check_true("a foreign stream is rejected", foreign_rejected);
+  return deepdraw_test::summary();
+}
