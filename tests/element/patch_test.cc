@@ -109,35 +109,25 @@ namespace
                  const double        increment)
   {
     std::cout << integration << " integration, |A| = " << A.norm() << std::endl;
-    ParameterHandler prm;
-    problem::FormingProblem::declare_parameters(prm);
-    prm.parse_input_from_string(
+    const auto forming_problem = element_test::run_forming_problem(
       prm_text(affine_displacement(A), integration, increment));
-    problem::FormingProblem forming_problem(prm);
-    forming_problem.run();
-    std::cout.precision(6); // run() leaves it at 3
 
     // Nodal displacements against u = A X at the final load t = 1.
-    const auto       &X     = forming_problem.get_initial_vertices();
-    const auto       &u     = forming_problem.get_total_displacement();
-    double            error = 0., scale = 0.;
-    unsigned int      n_interior = 0, n_distorted = 0;
-    std::vector<bool> seen(X.size(), false);
-    for (const auto &cell :
-         forming_problem.get_dof_handler().active_cell_iterators())
-      for (const unsigned int v : cell->vertex_indices())
+    const auto  &X     = forming_problem->get_initial_vertices();
+    const auto  &u     = forming_problem->get_total_displacement();
+    double       error = 0., scale = 0.;
+    unsigned int n_interior = 0, n_distorted = 0;
+    element_test::for_each_vertex(
+      *forming_problem,
+      [&](const auto &cell, const unsigned int v, const unsigned int vertex)
       {
-        const unsigned int vertex = cell->vertex_index(v);
-        if (seen[vertex])
-          continue;
-        seen[vertex]                = true;
         const Tensor<1, 3> expected = A * X[vertex];
         scale                       = std::max(scale, expected.norm());
         bool interior               = true;
         for (unsigned int d = 0; d < 3; ++d)
           interior &= X[vertex][d] > 1e-12 && X[vertex][d] < 1. - 1e-12;
         if (!interior)
-          continue;
+          return;
         ++n_interior;
         // Vertices of the regular mesh lie on multiples of 1/4.
         for (unsigned int d = 0; d < 3; ++d)
@@ -151,7 +141,7 @@ namespace
           error
             = std::max(error,
                        std::abs(u[cell->vertex_dof_index(v, c)] - expected[c]));
-      }
+      });
     deepdraw_test::check_true("27 interior nodes, all moved by the distortion",
                               n_interior == 27 && n_distorted == 27);
     // Round-off of a Newton solution converged to 1e-12.
@@ -161,7 +151,7 @@ namespace
                                1e-10);
 
     Result result;
-    result.stress       = forming_problem.cell_average_cauchy_stress();
+    result.stress       = forming_problem->cell_average_cauchy_stress();
     double stress_error = 0.;
     for (const Tensor<2, 3> &sigma : result.stress)
       stress_error = std::max(stress_error, (sigma - result.stress[0]).norm());
@@ -171,7 +161,7 @@ namespace
                                1e-10);
     result.min_plastic_strain = std::numeric_limits<double>::max();
     result.max_plastic_strain = 0.;
-    for (const auto &point : forming_problem.get_history())
+    for (const auto &point : forming_problem->get_history())
     {
       result.min_plastic_strain
         = std::min(result.min_plastic_strain,
