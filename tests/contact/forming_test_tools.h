@@ -99,6 +99,24 @@ namespace forming_test
         }
     return Tensor<1, 3>();
   }
+
+  // visit(cell, v, vertex index) once per vertex of the mesh.
+  template <typename Visitor>
+  void
+  for_each_vertex(const deepdraw::problem::FormingProblem &problem,
+                  const Visitor                           &visit)
+  {
+    std::vector<bool> seen(problem.get_initial_vertices().size(), false);
+    for (const auto &cell : problem.get_dof_handler().active_cell_iterators())
+      for (const unsigned int v : cell->vertex_indices())
+      {
+        const unsigned int vertex = cell->vertex_index(v);
+        if (seen[vertex])
+          continue;
+        seen[vertex] = true;
+        visit(cell, v, vertex);
+      }
+  }
 } // namespace forming_test
 
 #endif

@@ -22,7 +22,7 @@
 // bound asked of the element; 1.7 x the largest error seen); selective
 // reduced above 1.5 at ratio 5 and over, so that a silently disabled
 // enhancement (both elements alike) fails.
-#include "element/element_test_tools.h"
+#include "contact/forming_test_tools.h"
 #include "test_utilities.h"
 
 #include <deal.II/base/mpi.h>
@@ -77,7 +77,7 @@ namespace
          "subsection Output\n  set Output directory = cantilever-output\n"
          "  set Write VTU = false\nend\n";
     const auto forming_problem
-      = element_test::run_forming_problem(prm_text.str());
+      = forming_test::run_from_text(prm_text.str(), "cantilever-output");
 
     const double force      = forming_problem->face_reaction(1)[2];
     const double I          = width * std::pow(thickness, 3) / 12.;

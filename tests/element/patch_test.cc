@@ -23,7 +23,7 @@
 // Two cases: an elastic one (|A| = 1e-4), also compared with small-strain
 // Hooke's law, and a plastic one with 10 % strains and a rotation, where the
 // SRI and full stresses must coincide too (the SRI correction is zero).
-#include "element/element_test_tools.h"
+#include "contact/forming_test_tools.h"
 #include "test_utilities.h"
 
 #include <array>
@@ -109,15 +109,16 @@ namespace
                  const double        increment)
   {
     std::cout << integration << " integration, |A| = " << A.norm() << std::endl;
-    const auto forming_problem = element_test::run_forming_problem(
-      prm_text(affine_displacement(A), integration, increment));
+    const auto forming_problem = forming_test::run_from_text(
+      prm_text(affine_displacement(A), integration, increment),
+      "patch-test-output");
 
     // Nodal displacements against u = A X at the final load t = 1.
     const auto  &X     = forming_problem->get_initial_vertices();
     const auto  &u     = forming_problem->get_total_displacement();
     double       error = 0., scale = 0.;
     unsigned int n_interior = 0, n_distorted = 0;
-    element_test::for_each_vertex(
+    forming_test::for_each_vertex(
       *forming_problem,
       [&](const auto &cell, const unsigned int v, const unsigned int vertex)
       {
@@ -185,8 +186,9 @@ namespace
       = {{stretch + "*x*cos" + angle + " - y*sin" + angle + " - x",
           stretch + "*x*sin" + angle + " + y*cos" + angle + " - y",
           "0"}};
-    return element_test::run_forming_problem(
-             prm_text(u, integration, 0.05, final_load))
+    return forming_test::run_from_text(
+             prm_text(u, integration, 0.05, final_load),
+             "patch-test-output")
       ->cell_average_cauchy_stress();
   }
 } // namespace

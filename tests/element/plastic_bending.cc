@@ -37,7 +37,7 @@
 //   log r_{k+1} / log r_k >= 1.8 over the iterations with r < 1e-2 (with
 //   the default enhanced tolerance 1e-4; 1e-12 gives the same iterates to
 //   three digits).
-#include "element/element_test_tools.h"
+#include "contact/forming_test_tools.h"
 #include "test_utilities.h"
 
 #include <deal.II/base/mpi.h>
@@ -97,14 +97,14 @@ namespace
                 "subsection Output\n  set Output directory = bending-output\n"
                 "  set Write VTU = false\nend\n";
     const auto forming_problem
-      = element_test::run_forming_problem(prm_text.str());
+      = forming_test::run_from_text(prm_text.str(), "bending-output");
     const auto &X = forming_problem->get_initial_vertices();
     const auto &u = forming_problem->get_total_displacement();
     const auto &f = forming_problem->get_internal_force();
     // Current position of the vertices on y = 0 by initial (x, z).
     std::map<std::pair<long, long>, Point<3>> position;
     std::vector<std::pair<double, Point<3>>>  end_face; // (f_x, x)
-    element_test::for_each_vertex(
+    forming_test::for_each_vertex(
       *forming_problem,
       [&](const auto &cell, const unsigned int v, const unsigned int vertex)
       {

@@ -3,6 +3,7 @@
 // stresses, back stresses, plastic strains, rotated material axes, enhanced
 // parameters and a moved mesh), write() and read() reproduce every field
 // bit for bit; a stream cut short, or one that is not a state, is rejected.
+#include "contact/forming_test_tools.h"
 #include "test_utilities.h"
 
 #include <deal.II/base/mpi.h>
@@ -60,27 +61,23 @@ int
 main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  ParameterHandler                 prm;
-  problem::FormingProblem::declare_parameters(prm);
-  prm.parse_input_from_string(prm_text);
-  problem::FormingProblem forming_problem(prm);
-  forming_problem.run();
-  const problem::SimulationState &state = forming_problem.get_state();
+  const auto                       forming_problem
+    = forming_test::run_from_text(prm_text, "state-test-output");
+  const problem::SimulationState &state = forming_problem->get_state();
 
   // The state is not trivial (else the comparison proves little).
   double largest_plastic_strain = 0., largest_enhanced = 0., axes_turn = 0.;
   for (const auto &point : state.history)
   {
-    largest_plastic_strain = std::max(largest_plastic_strain,
-                                      point.state.equivalent_plastic_strain);
-    axes_turn              = std::max(axes_turn,
-                         std::abs(point.material_axes[0][2]));
+    largest_plastic_strain
+      = std::max(largest_plastic_strain, point.state.equivalent_plastic_strain);
+    axes_turn = std::max(axes_turn, std::abs(point.material_axes[0][2]));
   }
   for (const auto &cell : state.enhanced_parameters)
     for (const double value : cell.values)
       largest_enhanced = std::max(largest_enhanced, std::abs(value));
-  deepdraw_test::check_true("plastic points (epbar " +
-                              std::to_string(largest_plastic_strain) + ")",
+  deepdraw_test::check_true("plastic points (epbar "
+                              + std::to_string(largest_plastic_strain) + ")",
                             largest_plastic_strain > 1e-3);
   deepdraw_test::check_true("enhanced parameters are not zero",
                             largest_enhanced > 0.);
@@ -110,7 +107,8 @@ main(int argc, char *argv[])
         && copy.history[q].material_axes == state.history[q].material_axes;
   bool enhanced_same
     = copy.enhanced_parameters.size() == state.enhanced_parameters.size();
-  for (unsigned int c = 0; enhanced_same && c < state.enhanced_parameters.size();
+  for (unsigned int c = 0;
+       enhanced_same && c < state.enhanced_parameters.size();
        ++c)
     enhanced_same = copy.enhanced_parameters[c].values
                       == state.enhanced_parameters[c].values
@@ -127,13 +125,12 @@ main(int argc, char *argv[])
                               && copy.increment_number
                                    == state.increment_number);
   deepdraw_test::check_true("vertices", vertices_same);
-  deepdraw_test::check_true("total displacement, Newton unknowns",
-                            same(copy.total_displacement,
-                                 state.total_displacement)
-                              && same(copy.converged_solution,
-                                      state.converged_solution)
-                              && same(copy.previous_converged_solution,
-                                      state.previous_converged_solution));
+  deepdraw_test::check_true(
+    "total displacement, Newton unknowns",
+    same(copy.total_displacement, state.total_displacement)
+      && same(copy.converged_solution, state.converged_solution)
+      && same(copy.previous_converged_solution,
+              state.previous_converged_solution));
   deepdraw_test::check_true("quadrature-point history", history_same);
   deepdraw_test::check_true("enhanced parameters", enhanced_same);
 
@@ -150,7 +147,8 @@ main(int argc, char *argv[])
       truncated_rejected = false;
     }
     catch (const std::runtime_error &)
-    {}
+    {
+    }
   }
   deepdraw_test::check_true("a stream cut short is rejected",
                             truncated_rejected);
