@@ -38,15 +38,18 @@ namespace deepdraw
                      n * sizeof(double));
       }
 
-      void
-      get_doubles(std::istream &stream, double *values, const std::size_t n)
+      // A block written by put_doubles: its count, then its values.
+      std::size_t
+      get_count(std::istream &stream)
       {
-        std::size_t stored = 0;
-        get(stream, stored);
-        if (stored != n)
-          throw std::runtime_error("simulation state: " + std::to_string(stored)
-                                   + " values stored where " + std::to_string(n)
-                                   + " are expected");
+        std::size_t n = 0;
+        get(stream, n);
+        return n;
+      }
+
+      void
+      get_values(std::istream &stream, double *values, const std::size_t n)
+      {
         stream.read(reinterpret_cast<char *>(values), n * sizeof(double));
         if (!stream)
           throw std::runtime_error("simulation state: the stream ends early");
@@ -103,12 +106,8 @@ namespace deepdraw
       void
       get_vector(std::istream &stream, Vector<double> &vector)
       {
-        std::size_t n        = 0;
-        const auto  position = stream.tellg();
-        get(stream, n);
-        stream.seekg(position);
-        vector.reinit(n);
-        get_doubles(stream, vector.begin(), n);
+        vector.reinit(get_count(stream));
+        get_values(stream, vector.begin(), vector.size());
       }
     } // namespace
 
@@ -150,29 +149,23 @@ namespace deepdraw
       get(stream, load);
       get(stream, last_load_increment);
       get(stream, increment_number);
-      std::size_t n        = 0;
-      const auto  position = stream.tellg();
-      get(stream, n);
-      stream.seekg(position);
+      std::size_t n = get_count(stream);
       if (n % 3 != 0)
         throw std::runtime_error("simulation state: bad vertex block");
       vertices.resize(n / 3);
-      get_doubles(stream, reinterpret_cast<double *>(vertices.data()), n);
+      get_values(stream, reinterpret_cast<double *>(vertices.data()), n);
       get_vector(stream, total_displacement);
       get_vector(stream, converged_solution);
       get_vector(stream, previous_converged_solution);
-      get(stream, n);
+      n = get_count(stream);
       if (n % doubles_per_point != 0)
         throw std::runtime_error("simulation state: bad history block");
       std::vector<double> points(n);
-      stream.read(reinterpret_cast<char *>(points.data()), n * sizeof(double));
-      if (!stream)
-        throw std::runtime_error("simulation state: the stream ends early");
+      get_values(stream, points.data(), n);
       history.resize(n / doubles_per_point);
       for (std::size_t q = 0; q < history.size(); ++q)
         unpack(&points[doubles_per_point * q], history[q]);
-      get(stream, n);
-      enhanced_parameters.resize(n);
+      enhanced_parameters.resize(get_count(stream));
       for (fe::EnhancedParameters &cell : enhanced_parameters)
       {
         stream.read(reinterpret_cast<char *>(&cell), sizeof(cell));
