@@ -37,13 +37,6 @@ namespace deepdraw
     }
 
 
-    ElementTechnology
-    HexahedronElement::technology() const
-    {
-      return parameters.technology;
-    }
-
-
     ElementStatus
     HexahedronElement::integrate(const CellGeometry           &geometry,
                                  const double                 *du,

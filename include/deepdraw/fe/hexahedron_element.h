@@ -66,9 +66,6 @@ namespace deepdraw
                         const material::HillPlasticity &material,
                         const FiniteElement<3>         &fe);
 
-      ElementTechnology
-      technology() const;
-
       // Condensed residual (24) and, if matrix != nullptr, tangent
       // (24 x 24) for the local displacement increments du (local dof
       // order of fe); old/trial: the cell's 8 quadrature points; enhanced
