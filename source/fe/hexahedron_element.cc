@@ -224,23 +224,16 @@ namespace deepdraw
     {
       constexpr unsigned int nu = dofs_per_cell;
       if (n_enhanced == 0)
-      {
-        double              element_matrix[nu * nu];
-        const ElementStatus status
-          = integrate(geometry,
-                      du,
-                      nullptr,
-                      old_history,
-                      trial_history,
-                      residual,
-                      matrix != nullptr ? element_matrix : nullptr,
-                      plastic_points);
-        if (status == ElementStatus::ok && matrix != nullptr)
-          for (unsigned int i = 0; i < nu; ++i)
-            for (unsigned int j = 0; j < nu; ++j)
-              (*matrix)(i, j) = element_matrix[i * nu + j];
-        return status;
-      }
+        // FullMatrix stores its entries row by row: integrate() fills the
+        // 24 x 24 matrix in place.
+        return integrate(geometry,
+                         du,
+                         nullptr,
+                         old_history,
+                         trial_history,
+                         residual,
+                         matrix != nullptr ? &(*matrix)(0, 0) : nullptr,
+                         plastic_points);
 
       // The enhanced parameters: predicted from the last linearisation,
       // then Newton on r_alpha(du, alpha) = 0 at fixed du.
