@@ -23,8 +23,8 @@ namespace deepdraw
         return t.access_raw_entry(6 * I + J);
       }
 
-      // Local Newton (doc/theory_material.md): |f| <= this * Y is converged, well
-      // below the yield-check tolerance so that a converged state
+      // Local Newton (doc/theory_material.md): |f| <= this * Y is converged,
+      // well below the yield-check tolerance so that a converged state
       // re-evaluated with a zero increment is elastic.
       constexpr double       residual_tolerance = 1e-13;
       constexpr double       yield_tolerance    = 1e-12;

@@ -1,8 +1,8 @@
-// The three states of the Alart–Curnier law (doc/theory_contact.md) at chosen inputs,
-// the complementarity conditions at solution points, and the independence of
-// the solution from the augmentation parameter r: a pair (λ, ĝ) satisfying
-// the contact conditions gives F_sup = 0 for every r, a pair violating them
-// does not.
+// The three states of the Alart–Curnier law (doc/theory_contact.md) at chosen
+// inputs, the complementarity conditions at solution points, and the
+// independence of the solution from the augmentation parameter r: a pair (λ, ĝ)
+// satisfying the contact conditions gives F_sup = 0 for every r, a pair
+// violating them does not.
 #include "contact/contact_test_tools.h"
 
 #include <deepdraw/contact/alart_curnier_law.h>

@@ -1,9 +1,9 @@
 // The assembled Newton matrix of the full contact problem (sheet, punch,
 // die, force-controlled blank holder, Coulomb friction) is the derivative of
-// the assembled residual (doc/theory_material.md, doc/theory_contact.md): central finite differences of
-// every column, on a coarse square cup with mixed open/stick/slip pairs.
-// Columns whose difference crosses a kink of the contact law (a pair
-// changing state between x - h and x + h) are skipped and counted.
+// the assembled residual (doc/theory_material.md, doc/theory_contact.md):
+// central finite differences of every column, on a coarse square cup with mixed
+// open/stick/slip pairs. Columns whose difference crosses a kink of the contact
+// law (a pair changing state between x - h and x + h) are skipped and counted.
 #include "test_utilities.h"
 
 #include <deal.II/base/mpi.h>

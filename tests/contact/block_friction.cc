@@ -11,9 +11,9 @@
 //
 // Slip (s = 0.01 mm, 30 x the elastic shear displacement mu p H / G =
 // 3.2e-4 mm needed to reach the limit): every bottom node must slip, where
-// the law (doc/theory_contact.md) gives |lambda_T| = mu lambda_N per node; the slip
-// direction is +x at every node (nu = 0: no motion along y to first order in
-// the strains; the y component of the die force is bounded by eps^2 ~ 1e-6
+// the law (doc/theory_contact.md) gives |lambda_T| = mu lambda_N per node; the
+// slip direction is +x at every node (nu = 0: no motion along y to first order
+// in the strains; the y component of the die force is bounded by eps^2 ~ 1e-6
 // of its normal force), so the total
 // tangential force of the die is -mu times its normal force: asserted to
 // 1e-6 relative per node and in total (Newton converged to 1e-12).

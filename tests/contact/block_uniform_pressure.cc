@@ -1,5 +1,5 @@
-// Uniform pressure of a block on a flat rigid tool (doc/decisions.md D8, issue 4
-// test 1).
+// Uniform pressure of a block on a flat rigid tool (doc/decisions.md D8, issue
+// 4 test 1).
 //
 // A 2 x 2 x 1 mm block (quarter model, symmetry planes x = 0 and y = 0,
 // 4 x 4 x 2 elements) lies on the frictionless plane z = 0

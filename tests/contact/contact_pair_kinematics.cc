@@ -1,8 +1,9 @@
-// Gap vector ĝ = g_N n + g_T of one node against a rigid tool (doc/theory_contact.md):
-// values on a plane against the analytic expressions, distances on a sphere
-// and a torus against their closed forms, and the full linearisation (moving
-// foot point and turning normal) against central differences with a fresh
-// closest-point projection for every perturbed Δu and tool position z.
+// Gap vector ĝ = g_N n + g_T of one node against a rigid tool
+// (doc/theory_contact.md): values on a plane against the analytic expressions,
+// distances on a sphere and a torus against their closed forms, and the full
+// linearisation (moving foot point and turning normal) against central
+// differences with a fresh closest-point projection for every perturbed Δu and
+// tool position z.
 #include "contact/contact_test_tools.h"
 
 #include <deepdraw/contact/contact_pair_kinematics.h>

@@ -7,9 +7,9 @@
 
 #include <cmath>
 #include <deal.II/base/parameter_handler.h>
+#include <deepdraw/fe/quadrature_point_update.h>
 #include <deepdraw/material/hill_plasticity.h>
 #include <deepdraw/material/material_parameters.h>
-#include <deepdraw/fe/quadrature_point_update.h>
 
 using namespace dealii;
 using namespace deepdraw;
@@ -48,22 +48,17 @@ namespace
 
     // Pre-stress: a plastic multiaxial stretch.
     fe::QuadraturePointHistory state, next;
-    Tensor<2, 3>                    P;
-    bool                            plastic = false;
-    Tensor<2, 3>                    H;
+    Tensor<2, 3>               P;
+    bool                       plastic = false;
+    Tensor<2, 3>               H;
     H[0][0] = 0.02;
     H[1][1] = -0.005;
     H[0][1] = 0.004;
     H[2][0] = -0.003;
-    deepdraw_test::check_true("pre-stressing increment succeeds",
-                              fe::update_quadrature_point(material,
-                                                               state,
-                                                               H,
-                                                               next,
-                                                               P,
-                                                               nullptr,
-                                                               plastic)
-                                == fe::PointStatus::ok);
+    deepdraw_test::check_true(
+      "pre-stressing increment succeeds",
+      fe::update_quadrature_point(material, state, H, next, P, nullptr, plastic)
+        == fe::PointStatus::ok);
     deepdraw_test::check_true("pre-stress is plastic", plastic);
     state = next;
 
@@ -82,12 +77,12 @@ namespace
       const Tensor<2, 3> H_rotation
         = step - Tensor<2, 3>(unit_symmetric_tensor<3>());
       fe::update_quadrature_point(material,
-                                       state,
-                                       H_rotation,
-                                       next,
-                                       P,
-                                       nullptr,
-                                       plastic);
+                                  state,
+                                  H_rotation,
+                                  next,
+                                  P,
+                                  nullptr,
+                                  plastic);
       state = next;
     }
 

@@ -8,9 +8,9 @@
 #include "test_utilities.h"
 
 #include <cmath>
+#include <deepdraw/fe/quadrature_point_update.h>
 #include <deepdraw/material/hill_plasticity.h>
 #include <deepdraw/material/material_parameters.h>
-#include <deepdraw/fe/quadrature_point_update.h>
 
 using namespace dealii;
 using namespace deepdraw;
@@ -33,17 +33,17 @@ namespace
     H[0][1] = gamma_end / n_increments;
 
     fe::QuadraturePointHistory state, next;
-    Tensor<2, 3>                    P;
-    bool                            plastic = false;
+    Tensor<2, 3>               P;
+    bool                       plastic = false;
     for (unsigned int i = 0; i < n_increments; ++i)
     {
       fe::update_quadrature_point(material,
-                                       state,
-                                       H,
-                                       next,
-                                       P,
-                                       nullptr,
-                                       plastic);
+                                  state,
+                                  H,
+                                  next,
+                                  P,
+                                  nullptr,
+                                  plastic);
       state = next;
     }
     const Tensor<2, 3> sigma = fe::cauchy_stress(state);

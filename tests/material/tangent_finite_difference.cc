@@ -1,7 +1,7 @@
 // The consistent tangent of HillPlasticity::update equals a central finite
-// difference of the stress update (doc/theory_material.md: the global Newton's quadratic
-// convergence relies on it). Elastic, plastic, kinematic hardening, perfect
-// plasticity, several multiaxial and large increments.
+// difference of the stress update (doc/theory_material.md: the global Newton's
+// quadratic convergence relies on it). Elastic, plastic, kinematic hardening,
+// perfect plasticity, several multiaxial and large increments.
 //
 // Tolerance 1e-6 of max|T|: with step h = 1e-5 max(|d_eps|, 1e-4) the
 // truncation error is ~ (h/|d_eps|)^2 ~ 1e-10 and the round-off

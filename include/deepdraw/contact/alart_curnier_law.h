@@ -1,7 +1,8 @@
-// The node-level frictional contact law of doc/theory_contact.md: Alart–Curnier's
-// augmented-Lagrangian projection and its generalised (semismooth)
-// derivatives, for one sheet node against one rigid tool (reference Eq. 12).
-// All vectors are global components; the law knows nothing of the mesh.
+// The node-level frictional contact law of doc/theory_contact.md:
+// Alart–Curnier's augmented-Lagrangian projection and its generalised
+// (semismooth) derivatives, for one sheet node against one rigid tool
+// (reference Eq. 12). All vectors are global components; the law knows nothing
+// of the mesh.
 #ifndef deepdraw_contact_alart_curnier_law_h
 #define deepdraw_contact_alart_curnier_law_h
 

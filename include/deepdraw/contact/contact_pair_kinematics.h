@@ -1,5 +1,5 @@
-// Gap vector ĝ of one node against one rigid tool (doc/theory_contact.md) and its
-// derivatives with respect to the node's displacement increment Δu and to
+// Gap vector ĝ of one node against one rigid tool (doc/theory_contact.md) and
+// its derivatives with respect to the node's displacement increment Δu and to
 // the position z of a tool translated along a unit axis a (the
 // force-controlled blank holder).
 #ifndef deepdraw_contact_contact_pair_kinematics_h

@@ -122,12 +122,12 @@ namespace deepdraw::geometry
     std::vector<EdgeKinds>                declared_kinds;
     std::vector<std::array<EdgeState, 4>> edge_states;
     // Control-net boxes in the tool frame, as plain arrays for the culling.
-    std::vector<std::array<double, 6>>          local_boxes;
-    double                                      scale = 0.;
-    dealii::Tensor<2, 3>                        rotation_matrix;
-    dealii::Tensor<1, 3>                        translation_vector;
-    bool                                        is_identity_rotation = true;
-    dealii::BoundingBox<3>                      current_box;
+    std::vector<std::array<double, 6>> local_boxes;
+    double                             scale = 0.;
+    dealii::Tensor<2, 3>               rotation_matrix;
+    dealii::Tensor<1, 3>               translation_vector;
+    bool                               is_identity_rotation = true;
+    dealii::BoundingBox<3>             current_box;
   };
 } // namespace deepdraw::geometry
 

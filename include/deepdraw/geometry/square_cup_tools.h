@@ -1,5 +1,5 @@
-// The NUMISHEET'93 square-cup tools (doc/results.md) built from their dimensions
-// as exact rational Bézier patches (planes, cylinders, tori).
+// The NUMISHEET'93 square-cup tools (doc/results.md) built from their
+// dimensions as exact rational Bézier patches (planes, cylinders, tori).
 //
 // Coordinates: blank bottom surface z = 0, top z = t. The die lies below the
 // sheet (flat top face z = 0, opening half-width 37, shoulder radius 8, wall

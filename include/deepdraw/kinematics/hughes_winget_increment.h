@@ -1,8 +1,8 @@
-// Incremental objective kinematics of one increment [t, t+dt] (doc/theory.md §1-2):
-// from the displacement-increment gradient H = grad_{x_t}(du) it computes the
-// mid-increment velocity gradient dL = H F_half^{-1} (F_half = I + H/2), the
-// strain increment d_eps = sym dL, the spin increment dW = skew dL and the
-// Hughes-Winget rotation Q = (I - dW/2)^{-1} (I + dW/2), the half-step
+// Incremental objective kinematics of one increment [t, t+dt] (doc/theory.md
+// §1-2): from the displacement-increment gradient H = grad_{x_t}(du) it
+// computes the mid-increment velocity gradient dL = H F_half^{-1} (F_half = I +
+// H/2), the strain increment d_eps = sym dL, the spin increment dW = skew dL
+// and the Hughes-Winget rotation Q = (I - dW/2)^{-1} (I + dW/2), the half-step
 // rotation Q_half = (I - dW/4)^{-1} (I + dW/4) that carries the material
 // axes to the mid-increment configuration where d_eps is measured (their
 // derivatives are taken in fe/quadrature_point_update.cc, doc/theory.md §4).

@@ -1,6 +1,6 @@
 // Hill'48 elastoplasticity with Swift isotropic and Prager kinematic
-// hardening at a material point (doc/theory_material.md): fully implicit return mapping
-// and its exact algorithmic tangent. Theory: doc/theory_material.md.
+// hardening at a material point (doc/theory_material.md): fully implicit return
+// mapping and its exact algorithmic tangent. Theory: doc/theory_material.md.
 #ifndef deepdraw_material_hill_plasticity_h
 #define deepdraw_material_hill_plasticity_h
 

@@ -1,6 +1,6 @@
-// Parameters of the sheet material (doc/theory_material.md): isotropic elasticity,
-// Hill'48 anisotropy, Swift isotropic and Prager kinematic hardening.
-// Defaults: NUMISHEET'93 aluminium (doc/results.md). Units: MPa.
+// Parameters of the sheet material (doc/theory_material.md): isotropic
+// elasticity, Hill'48 anisotropy, Swift isotropic and Prager kinematic
+// hardening. Defaults: NUMISHEET'93 aluminium (doc/results.md). Units: MPa.
 #ifndef deepdraw_material_material_parameters_h
 #define deepdraw_material_material_parameters_h
 

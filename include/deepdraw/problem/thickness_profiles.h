@@ -1,7 +1,7 @@
 // Profiles of a column quantity (thickness strain) along the OX axis and the
-// diagonal OD of the blank (doc/user_guide.md §3, doc/results.md). Columns form the structured
-// grid of the initial blank: column i + j (nx + 1) stands at
-// (i Length/nx, j Width/ny).
+// diagonal OD of the blank (doc/user_guide.md §3, doc/results.md). Columns form
+// the structured grid of the initial blank: column i + j (nx + 1) stands at (i
+// Length/nx, j Width/ny).
 #ifndef deepdraw_problem_thickness_profiles_h
 #define deepdraw_problem_thickness_profiles_h
 

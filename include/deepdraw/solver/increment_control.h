@@ -1,6 +1,7 @@
-// Load stepping with cut-back and regrowth (doc/theory.md §5): proposes the next
-// increment of the load parameter, lands exactly on requested loads (output
-// points, the end), halves after a divergence and grows after easy increments.
+// Load stepping with cut-back and regrowth (doc/theory.md §5): proposes the
+// next increment of the load parameter, lands exactly on requested loads
+// (output points, the end), halves after a divergence and grows after easy
+// increments.
 #ifndef deepdraw_solver_increment_control_h
 #define deepdraw_solver_increment_control_h
 
