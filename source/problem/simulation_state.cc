@@ -12,7 +12,7 @@ namespace deepdraw
     {
       // A plain binary image in this machine's byte order, with a tag and
       // counts, so that a truncated or foreign stream is detected.
-      constexpr char tag[] = "deepdraw-state-1";
+      constexpr char tag[] = "deepdraw-state-2";
 
       template <typename T>
       void
@@ -134,6 +134,16 @@ namespace deepdraw
       put(stream, enhanced_parameters.size());
       for (const fe::EnhancedParameters &cell : enhanced_parameters)
         stream.write(reinterpret_cast<const char *>(&cell), sizeof(cell));
+      put(stream, next_increment);
+      for (const auto *bytes : {&contact.pair_open, &contact.pair_status})
+      {
+        put(stream, bytes->size());
+        stream.write(reinterpret_cast<const char *>(bytes->data()),
+                     bytes->size());
+      }
+      put_doubles(stream,
+                  contact.tool_position.data(),
+                  contact.tool_position.size());
       if (!stream)
         throw std::runtime_error("simulation state: writing failed");
     }
@@ -172,6 +182,18 @@ namespace deepdraw
         if (!stream)
           throw std::runtime_error("simulation state: the stream ends early");
       }
+      get(stream, next_increment);
+      for (auto *bytes : {&contact.pair_open, &contact.pair_status})
+      {
+        bytes->resize(get_count(stream));
+        stream.read(reinterpret_cast<char *>(bytes->data()), bytes->size());
+        if (!stream)
+          throw std::runtime_error("simulation state: the stream ends early");
+      }
+      contact.tool_position.resize(get_count(stream));
+      get_values(stream,
+                 contact.tool_position.data(),
+                 contact.tool_position.size());
     }
   } // namespace problem
 } // namespace deepdraw

@@ -154,5 +154,21 @@ namespace deepdraw
     {
       return cut_backs;
     }
+
+
+    IncrementControl::State
+    IncrementControl::state() const
+    {
+      return {load, increment};
+    }
+
+
+    void
+    IncrementControl::restore(const State &state)
+    {
+      load      = state.load;
+      increment = state.increment;
+      cut_backs = 0;
+    }
   } // namespace solver
 } // namespace deepdraw

@@ -63,7 +63,13 @@ main(int argc, char *argv[])
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const auto                       forming_problem
     = forming_test::run_from_text(prm_text, "state-test-output");
-  const problem::SimulationState &state = forming_problem->get_state();
+  // This model has no tools: the contact history is given values here so
+  // that its serialisation is checked too (the contact runs are checked end
+  // to end by kill_and_resume_test.py).
+  problem::SimulationState state = forming_problem->get_state();
+  state.contact.pair_open        = {1, 0, 1};
+  state.contact.pair_status      = {0, 2, 3};
+  state.contact.tool_position    = {0.5, -1.25};
 
   // The state is not trivial (else the comparison proves little).
   double largest_plastic_strain = 0., largest_enhanced = 0., axes_turn = 0.;
@@ -85,6 +91,8 @@ main(int argc, char *argv[])
   deepdraw_test::check_true("three increments, load 0.3",
                             state.increment_number == 3
                               && std::abs(state.load - 0.3) < 1e-12);
+  deepdraw_test::check_true("next increment 0.1 (Maximum increment)",
+                            std::abs(state.next_increment - 0.1) < 1e-15);
 
   std::stringstream stream;
   state.write(stream);
@@ -122,8 +130,14 @@ main(int argc, char *argv[])
                             copy.load == state.load
                               && copy.last_load_increment
                                    == state.last_load_increment
-                              && copy.increment_number
-                                   == state.increment_number);
+                              && copy.increment_number == state.increment_number
+                              && copy.next_increment == state.next_increment);
+  deepdraw_test::check_true("contact history",
+                            copy.contact.pair_open == state.contact.pair_open
+                              && copy.contact.pair_status
+                                   == state.contact.pair_status
+                              && copy.contact.tool_position
+                                   == state.contact.tool_position);
   deepdraw_test::check_true("vertices", vertices_same);
   deepdraw_test::check_true(
     "total displacement, Newton unknowns",

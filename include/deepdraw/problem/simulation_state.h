@@ -19,6 +19,20 @@ namespace deepdraw
   {
     using namespace dealii;
 
+    // The committed contact state that the next increment starts from:
+    // which pairs were open (the tangent predictor keeps them open,
+    // doc/theory.md §5) and where each tool stood (z along its axis for
+    // force control, 0 otherwise).
+    struct ContactHistory
+    {
+      std::vector<unsigned char> pair_open;
+      // Per pair, its state at the last evaluation (0 not found by the
+      // search, else 1 + contact::ContactState): the reference from which
+      // the next increment counts state changes.
+      std::vector<unsigned char> pair_status;
+      std::vector<double>        tool_position;
+    };
+
     struct SimulationState
     {
       // Load parameter t of the last converged increment, and that
@@ -26,6 +40,9 @@ namespace deepdraw
       double       load                = 0.;
       double       last_load_increment = 0.;
       unsigned int increment_number    = 0;
+      // Size of the next attempt proposed by the load stepping (before it
+      // is clipped to an output load): solver::IncrementControl::State.
+      double next_increment = 0.;
       // Current position of every vertex (the configuration x_t).
       std::vector<Point<3>> vertices;
       // Total displacement since t = 0 (displacement dofs).
@@ -38,6 +55,7 @@ namespace deepdraw
       // and the element-internal unknowns per cell (incompatible modes).
       std::vector<fe::QuadraturePointHistory> history;
       std::vector<fe::EnhancedParameters>     enhanced_parameters;
+      ContactHistory                          contact;
 
       // Binary image of all of the above; read() throws std::runtime_error
       // if the stream is not one (or was cut short).

@@ -56,6 +56,18 @@ namespace deepdraw
       unsigned int
       cut_backs_of_current_increment() const;
 
+      // What a restart needs (between increments): the load reached and
+      // the size of the next attempt before it is clipped to a landing.
+      struct State
+      {
+        double load      = 0.;
+        double increment = 0.;
+      };
+      State
+      state() const;
+      void
+      restore(const State &state);
+
     private:
       IncrementControlParameters parameters;
       std::vector<double>        landing_loads;
