@@ -1,5 +1,5 @@
 // deepdraw: implicit simulation of sheet-metal deep drawing.
-//   deepdraw FILE.prm [--output-directory DIR]
+//   deepdraw FILE.prm [--output-directory DIR] [--resume] [--quiet]
 //   deepdraw --help
 //   deepdraw --print-parameters
 #include <deal.II/base/exceptions.h>
@@ -7,6 +7,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/problem/forming_problem.h>
+#include <deepdraw/problem/stop_request.h>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -15,7 +16,8 @@
 namespace
 {
   const char *usage
-    = "usage: deepdraw FILE.prm [--output-directory DIR]\n"
+    = "usage: deepdraw FILE.prm [--output-directory DIR] [--resume] "
+      "[--quiet]\n"
       "       deepdraw --print-parameters   print all parameters, documented,\n"
       "                                     with their default values\n"
       "       deepdraw --help               print this text\n"
@@ -23,6 +25,9 @@ namespace
       "Runs the forming simulation described by FILE.prm and writes the "
       "results\n"
       "(solution.pvd + VTU for ParaView, CSV tables) to the output directory.\n"
+      "  --resume   continue from the checkpoint in the output directory\n"
+      "  --quiet    print only the summary, not a line per increment\n"
+      "SIGINT or SIGTERM stop after the current increment with a checkpoint.\n"
       "Exit codes: 0 done, 1 bad command line, 2 bad input, 3 the run could "
       "not\n"
       "be completed (results of the converged increments are kept).\n";
@@ -50,7 +55,8 @@ main(int argc, char *argv[])
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   dealii::deal_II_exceptions::disable_abort_on_exception();
 
-  std::string prm_file, output_directory;
+  std::string         prm_file, output_directory;
+  problem::RunOptions options;
   for (int i = 1; i < argc; ++i)
   {
     const std::string argument = argv[i];
@@ -68,6 +74,10 @@ main(int argc, char *argv[])
     }
     else if (argument == "--output-directory" && i + 1 < argc)
       output_directory = argv[++i];
+    else if (argument == "--resume")
+      options.resume = true;
+    else if (argument == "--quiet")
+      options.quiet = true;
     else if (!argument.empty() && argument[0] != '-' && prm_file.empty())
       prm_file = argument;
     else
@@ -114,9 +124,10 @@ main(int argc, char *argv[])
     return 2;
   }
 
+  problem::install_stop_handlers();
   try
   {
-    forming_problem->run();
+    forming_problem->run(options);
   }
   catch (const InputError &error)
   {

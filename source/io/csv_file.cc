@@ -32,14 +32,26 @@ namespace deepdraw
 
     void
     CsvFile::open(const std::string              &name,
-                  const std::vector<std::string> &columns)
+                  const std::vector<std::string> &columns,
+                  const bool                      append)
     {
       filename  = name;
       n_columns = columns.size();
-      file.open(filename);
+      if (append)
+      {
+        std::ifstream existing(filename);
+        std::string   header;
+        if (!std::getline(existing, header) || header != format_row(columns))
+          throw std::runtime_error(filename
+                                   + " does not have the columns of this run");
+        file.open(filename, std::ios::app);
+      }
+      else
+        file.open(filename);
       if (!file)
         throw std::runtime_error("cannot write " + filename);
-      file << format_row(columns) << std::endl;
+      if (!append)
+        file << format_row(columns) << std::endl;
     }
 
 

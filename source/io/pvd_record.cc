@@ -7,9 +7,18 @@ namespace deepdraw
 {
   namespace io
   {
-    PvdRecord::PvdRecord(const std::string &filename)
+    PvdRecord::PvdRecord(const std::string        &filename,
+                         const std::vector<Entry> &entries)
         : filename(filename)
+        , entries(entries)
     {
+    }
+
+
+    const std::vector<PvdRecord::Entry> &
+    PvdRecord::steps() const
+    {
+      return entries;
     }
 
 

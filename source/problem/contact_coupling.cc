@@ -10,6 +10,8 @@
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/problem/contact_coupling.h>
 #include <fstream>
+#include <stdexcept>
+#include <string>
 
 namespace deepdraw
 {
@@ -325,6 +327,47 @@ namespace deepdraw
       for (Pair &pair : pairs)
         pair.open_at_start
           = !pair.found || pair.result.state == contact::ContactState::open;
+    }
+
+
+    ContactHistory
+    ContactCoupling::committed_history() const
+    {
+      ContactHistory history;
+      history.tool_position = position_at_start;
+      history.pair_open.reserve(pairs.size());
+      history.pair_status.reserve(pairs.size());
+      for (const Pair &pair : pairs)
+      {
+        history.pair_open.push_back(pair.open_at_start ? 1 : 0);
+        history.pair_status.push_back(
+          pair.found ? 1 + static_cast<unsigned char>(pair.result.state) : 0);
+      }
+      return history;
+    }
+
+
+    void
+    ContactCoupling::restore(const ContactHistory &history)
+    {
+      if (history.pair_open.size() != pairs.size()
+          || history.pair_status.size() != pairs.size()
+          || history.tool_position.size() != position_at_start.size())
+        throw InputError("--resume: the contact state has "
+                         + std::to_string(history.pair_open.size())
+                         + " pairs and "
+                         + std::to_string(history.tool_position.size())
+                         + " tools, the model " + std::to_string(pairs.size())
+                         + " and " + std::to_string(position_at_start.size()));
+      position_at_start = history.tool_position;
+      for (std::size_t p = 0; p < pairs.size(); ++p)
+      {
+        pairs[p].open_at_start = history.pair_open[p] != 0;
+        pairs[p].found         = history.pair_status[p] != 0;
+        if (pairs[p].found)
+          pairs[p].result.state
+            = static_cast<contact::ContactState>(history.pair_status[p] - 1);
+      }
     }
 
 

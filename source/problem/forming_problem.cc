@@ -38,6 +38,7 @@ namespace deepdraw
       io::OutputParameters::declare_parameters(prm);
       geometry::SquareCupToolParameters::declare_parameters(prm);
       ContactCoupling::declare_parameters(prm);
+      CheckpointParameters::declare_parameters(prm);
     }
 
 
@@ -69,6 +70,8 @@ namespace deepdraw
       contact.parse_parameters(prm,
                                input_directory,
                                process_parameters.blank_holder_force);
+      checkpoint_parameters.parse_parameters(prm);
+      parameter_listing = flatten_parameters(prm);
 
       // Thickness profiles are square-cup tables: runs with tools only.
       if (contact.active())
@@ -296,7 +299,10 @@ namespace deepdraw
       state.last_load_increment         = target_load - start_load;
       state.load                        = target_load;
       if (contact.active())
+      {
         contact.commit(newton_unknowns);
+        state.contact = contact.committed_history();
+      }
       // Updated Lagrangian: the converged configuration becomes the
       // reference of the next increment (step-18 moves the vertices too).
       std::vector<bool> moved(triangulation.n_vertices(), false);
@@ -312,177 +318,6 @@ namespace deepdraw
       state.vertices = triangulation.get_vertices();
       update_cell_geometry();
       compute_thickness();
-    }
-
-
-    namespace
-    {
-      std::string
-      format_load(const double load)
-      {
-        std::ostringstream text;
-        text << std::setprecision(6) << load;
-        return text.str();
-      }
-    } // namespace
-
-
-    void
-    FormingProblem::run()
-    {
-      try
-      {
-        open_output_files();
-      }
-      catch (const std::exception &error)
-      {
-        throw InputError("Output/Output directory: cannot write results to '"
-                         + output_parameters.output_directory
-                         + "': " + error.what());
-      }
-      std::cout << "deepdraw: " << triangulation.n_active_cells() << " cells, "
-                << dof_handler.n_dofs() << " displacement unknowns, "
-                << newton_unknowns.size() - dof_handler.n_dofs()
-                << " contact unknowns, "
-                << fe::to_string(element_parameters.technology) << " element"
-                << std::endl;
-      if (contact.active())
-      {
-        contact.start_increment(0., 0.);
-        const unsigned int penetrating
-          = contact.n_initial_penetrations(triangulation.get_vertices());
-        if (penetrating > 0)
-          std::cout << "deepdraw: " << penetrating
-                    << " sheet nodes start inside a tool; the first "
-                       "increment pushes them out"
-                    << std::endl;
-        // Tool placement, contact fields and states of the initial state.
-        assemble(newton_unknowns, homogeneous_constraints, false);
-        contact.commit(newton_unknowns);
-      }
-      write_vtu(0.);
-
-      std::vector<double> landing_loads;
-      if (output_parameters.output_interval > 0.)
-        for (double load = output_parameters.output_interval;
-             load < increment_parameters.final_load;
-             load += output_parameters.output_interval)
-          landing_loads.push_back(load);
-      // The thickness profiles are computed at their travels, not
-      // interpolated (D6).
-      landing_loads.insert(landing_loads.end(),
-                           profile_travels.begin(),
-                           profile_travels.end());
-      solver::IncrementControl control(increment_parameters, landing_loads);
-
-      Timer run_timer;
-      // The times of an increment include its failed attempts (cut-backs):
-      // they are reset only once it has converged.
-      assembly_time             = 0.;
-      solve_time                = 0.;
-      double search_time_before = contact.search_time();
-      Timer  increment_timer;
-      while (!control.finished())
-      {
-        const double           old_load   = control.current_load();
-        const double           new_load   = old_load + control.next_increment();
-        unsigned int           iterations = 0;
-        const IncrementOutcome outcome
-          = solve_increment(old_load, new_load, iterations);
-
-        if (outcome != IncrementOutcome::converged)
-        {
-          std::cout << "  load " << format_load(new_load) << ": "
-                    << solver::describe(outcome)
-                    << ", cutting the increment back" << std::endl;
-          trial_history             = state.history;
-          trial_enhanced_parameters = state.enhanced_parameters;
-          if (!control.cut_back())
-          {
-            const bool too_small = control.next_increment()
-                                   < increment_parameters.minimum_increment;
-            throw RunFailure(
-              "the increment from load " + format_load(old_load) + " to "
-              + format_load(new_load) + " failed (" + solver::describe(outcome)
-              + ") after "
-              + std::to_string(control.cut_backs_of_current_increment())
-              + " attempt(s), and "
-              + (too_small ? "a further cut-back would go below Load "
-                             "stepping/Minimum increment"
-                           : "Load stepping/Maximum cut-backs is reached")
-              + "; the results up to load " + format_load(old_load) + " are in "
-              + output_parameters.output_directory);
-          }
-          continue;
-        }
-
-        const unsigned int cut_backs = control.cut_backs_of_current_increment();
-        control.accept(iterations);
-        commit_increment();
-        ++state.increment_number;
-
-        Timer      output_timer;
-        const bool at_output
-          = output_parameters.output_interval <= 0. || control.finished()
-            || std::find_if(landing_loads.begin(),
-                            landing_loads.end(),
-                            [&](const double l) {
-                              return std::abs(l - new_load)
-                                     < 1e-9 * std::max(1., std::abs(l));
-                            })
-                 != landing_loads.end();
-        if (at_output)
-          write_vtu(new_load);
-        write_increment_tables(new_load);
-        const double output_time = output_timer.wall_time();
-        const double search_time = contact.search_time() - search_time_before;
-        const double force_residual
-          = residual_history.empty() ? 0. : residual_history.back();
-        const double contact_residual = contact_residual_history.empty()
-                                          ? 0.
-                                          : contact_residual_history.back();
-
-        statistics_file.add_row({double(state.increment_number),
-                                 new_load,
-                                 new_load - old_load,
-                                 double(iterations),
-                                 double(cut_backs),
-                                 force_residual,
-                                 contact_residual,
-                                 double(n_plastic_points),
-                                 double(contact_changes),
-                                 double(contact.n_stick()),
-                                 double(contact.n_slip()),
-                                 assembly_time,
-                                 search_time,
-                                 solve_time,
-                                 output_time,
-                                 increment_timer.wall_time(),
-                                 sheet_volume()});
-
-        std::ostringstream line;
-        line << "increment " << std::setw(4) << state.increment_number
-             << "  load " << std::setw(9) << format_load(new_load)
-             << "  iterations " << std::setw(2) << iterations << "  cut-backs "
-             << cut_backs << std::scientific << std::setprecision(2)
-             << "  residuals " << force_residual << " " << contact_residual
-             << std::defaultfloat << "  plastic points " << n_plastic_points;
-        if (contact.active())
-          line << "  stick/slip " << contact.n_stick() << "/"
-               << contact.n_slip();
-        line << std::fixed << std::setprecision(3) << "  time "
-             << increment_timer.wall_time() << " s";
-        std::cout << line.str() << std::endl;
-        assembly_time      = 0.;
-        solve_time         = 0.;
-        search_time_before = contact.search_time();
-        increment_timer.restart();
-      }
-      std::cout << "deepdraw: finished at load "
-                << format_load(control.current_load()) << " after "
-                << state.increment_number << " increments in "
-                << run_timer.wall_time() << " s; results in "
-                << output_parameters.output_directory << std::endl;
     }
 
 

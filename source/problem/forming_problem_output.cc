@@ -78,11 +78,12 @@ namespace deepdraw
 
 
     void
-    FormingProblem::open_output_files()
+    FormingProblem::open_output_files(const bool resume)
     {
       const std::string &directory = output_parameters.output_directory;
       std::filesystem::create_directories(directory);
-      pvd = std::make_unique<io::PvdRecord>(directory + "/solution.pvd");
+      pvd = std::make_unique<io::PvdRecord>(directory + "/solution.pvd",
+                                            resumed_pvd_steps);
       statistics_file.open(directory + "/statistics.csv",
                            {"increment",
                             "load",
@@ -100,7 +101,8 @@ namespace deepdraw
                             "linear_solve_s",
                             "output_s",
                             "wall_s",
-                            "sheet_volume_mm3"});
+                            "sheet_volume_mm3"},
+                           resume);
       newton_file.open(directory + "/newton.csv",
                        {"increment",
                         "load",
@@ -108,12 +110,13 @@ namespace deepdraw
                         "force_residual",
                         "contact_residual",
                         "correction",
-                        "contact_changes"});
+                        "contact_changes"},
+                       resume);
       std::vector<std::string> columns = {"load"};
       for (const unsigned int face : reaction_faces)
         for (const char *component : {"_Fx", "_Fy", "_Fz"})
           columns.push_back(face_names[face] + component);
-      reactions_file.open(directory + "/reactions.csv", columns);
+      reactions_file.open(directory + "/reactions.csv", columns, resume);
       if (contact.active())
       {
         // Force of each tool on the sheet (N) and its translation (mm).
@@ -121,11 +124,12 @@ namespace deepdraw
         for (const ToolDefinition &tool : contact.tool_definitions())
           for (const char *suffix : {"_Fx", "_Fy", "_Fz", "_ux", "_uy", "_uz"})
             tool_columns.push_back(tool.name + suffix);
-        tools_file.open(directory + "/tools.csv", tool_columns);
+        tools_file.open(directory + "/tools.csv", tool_columns, resume);
 
-        process_tables.open(directory);
+        process_tables.open(directory, resume);
       }
-      write_increment_tables(0.);
+      if (!resume)
+        write_increment_tables(0.);
     }
 
 

@@ -167,20 +167,19 @@ namespace deepdraw
 
 
     void
-    ProcessTables::open(const std::string &directory)
+    ProcessTables::open(const std::string &directory, const bool append)
     {
       if (!tables_wanted)
         return;
       if (punch_tool != numbers::invalid_unsigned_int)
-        punch_force_file.open(directory + "/punch_force.csv",
-                              {"punch_travel_mm",
-                               "punch_force_N",
-                               "holder_force_N",
-                               "holder_z_mm"});
+        punch_force_file.open(
+          directory + "/punch_force.csv",
+          {"punch_travel_mm", "punch_force_N", "holder_force_N", "holder_z_mm"},
+          append);
       std::vector<std::string> columns = {"punch_travel_mm"};
       for (const DrawInPoint &point : draw_in_points)
         columns.push_back(point.name + "_mm");
-      draw_in_file.open(directory + "/draw_in.csv", columns);
+      draw_in_file.open(directory + "/draw_in.csv", columns, append);
     }
 
 

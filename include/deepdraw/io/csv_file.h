@@ -18,9 +18,12 @@ namespace deepdraw
       CsvFile() = default;
       CsvFile(const std::string              &filename,
               const std::vector<std::string> &columns);
+      // With append, the file must exist with this header (a resumed run):
+      // rows are added after its last one.
       void
       open(const std::string              &filename,
-           const std::vector<std::string> &columns);
+           const std::vector<std::string> &columns,
+           bool                            append = false);
       // Numbers with 10 significant digits; throws if the count is wrong.
       void
       add_row(const std::vector<double> &values);

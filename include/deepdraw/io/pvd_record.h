@@ -14,18 +14,24 @@ namespace deepdraw
     class PvdRecord
     {
     public:
-      explicit PvdRecord(const std::string &filename);
-      // Adds the VTU files (names relative to the .pvd) of one output step.
-      void
-      add_step(double time, const std::vector<std::string> &parts);
-
-    private:
       struct Entry
       {
         double      time;
         unsigned    part;
         std::string file;
       };
+
+      // A record with the given steps already in it (a resumed run); the
+      // file is written at the next add_step().
+      explicit PvdRecord(const std::string        &filename,
+                         const std::vector<Entry> &entries = {});
+      // Adds the VTU files (names relative to the .pvd) of one output step.
+      void
+      add_step(double time, const std::vector<std::string> &parts);
+      const std::vector<Entry> &
+      steps() const;
+
+    private:
       std::string        filename;
       std::vector<Entry> entries;
     };

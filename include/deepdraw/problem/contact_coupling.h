@@ -23,6 +23,7 @@
 #include <deepdraw/contact/contact_parameters.h>
 #include <deepdraw/geometry/rigid_tool.h>
 #include <deepdraw/geometry/square_cup_tools.h>
+#include <deepdraw/problem/simulation_state.h>
 #include <memory>
 #include <string>
 #include <vector>
@@ -139,6 +140,12 @@ namespace deepdraw
       // Remembers the converged tool positions and contact states.
       void
       commit(const Vector<double> &solution);
+      // What commit() remembered, for the SimulationState, and its
+      // restoration on a restart (same pairs and tools, checked).
+      ContactHistory
+      committed_history() const;
+      void
+      restore(const ContactHistory &history);
 
       // For output, after assemble(): per vertex (index of the vertex)
       // accumulated over its pairs.
@@ -176,6 +183,29 @@ namespace deepdraw
       n_initial_penetrations(const std::vector<Point<3>> &positions) const;
       double
       search_time() const;
+
+      // Checks that no tool passed through the sheet (D56,
+      // contact_coupling_checks.cc). At the start: no node more than half
+      // the sheet thickness inside a tool, and every tool's normal towards
+      // the sheet face it acts on; throws InputError naming the tool.
+      void
+      check_initial_placement(const std::vector<Point<3>> &positions,
+                              double sheet_thickness) const;
+      // Before an increment: "" or why a displacement-controlled tool
+      // moves farther than the search distance in [old_load, new_load];
+      // with the converged solution, the same for force-controlled tools.
+      std::string
+      check_tool_motion(double old_load, double new_load) const;
+      std::string
+      check_tool_motion(double                old_load,
+                        double                new_load,
+                        const Vector<double> &solution) const;
+      // After a converged increment (positions at t, du in solution): ""
+      // or which node ended inside which tool.
+      std::string
+      check_tool_sides(const std::vector<Point<3>> &positions,
+                       const Vector<double>        &solution,
+                       double                       sheet_thickness) const;
 
     private:
       struct Pair

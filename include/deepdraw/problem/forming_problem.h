@@ -31,6 +31,7 @@
 #include <deepdraw/material/hill_plasticity.h>
 #include <deepdraw/material/material_parameters.h>
 #include <deepdraw/problem/blank_geometry.h>
+#include <deepdraw/problem/checkpoint.h>
 #include <deepdraw/problem/contact_coupling.h>
 #include <deepdraw/problem/prescribed_displacements.h>
 #include <deepdraw/problem/process_parameters.h>
@@ -58,6 +59,15 @@ namespace deepdraw
       using std::runtime_error::runtime_error;
     };
 
+    // How run() starts and reports.
+    struct RunOptions
+    {
+      // Continue from the checkpoint in the output directory.
+      bool resume = false;
+      // Print only the summary line, not one line per increment.
+      bool quiet = false;
+    };
+
     class FormingProblem : private solver::NewtonSystem
     {
     public:
@@ -71,10 +81,12 @@ namespace deepdraw
                               const std::string &input_directory = ".");
 
       // Runs all increments, writing results as they converge. Throws
-      // RunFailure if an increment cannot be completed; what was written
-      // until then stays valid.
+      // RunFailure if an increment cannot be completed or a signal asks to
+      // stop (after writing a checkpoint); what was written until then
+      // stays valid. Throws InputError if the start is unusable (a tool
+      // inside the blank, a checkpoint of another model).
       void
-      run();
+      run(const RunOptions &options = RunOptions());
 
       // Sets the prescribed displacements and the tool positions of the
       // increment [old_load, new_load] as solve_increment() does, so that
@@ -197,8 +209,49 @@ namespace deepdraw
       commit_increment();
       void
       compute_thickness();
+      // The loads the increments land on (VTU outputs, thickness profiles).
+      std::vector<double>
+      landing_loads() const;
+      // The initial state (or the checkpoint's) and the opened outputs.
       void
-      open_output_files();
+      start_run(const RunOptions &options);
+      // solve_increment() and the checks that no tool passed through the
+      // sheet (D56); reason says why an increment failed.
+      IncrementOutcome
+      solve_checked_increment(double        old_load,
+                              double        new_load,
+                              unsigned int &iterations,
+                              std::string  &reason);
+      // Writes a checkpoint of the last converged state and throws
+      // RunFailure(reason).
+      [[noreturn]] void
+      stop_cleanly(const std::string &reason);
+      // One converged increment as statistics.csv and the console see it.
+      struct IncrementRecord
+      {
+        double       load_increment;
+        unsigned int iterations;
+        unsigned int cut_backs;
+        double       output_time;
+        double       search_time;
+        double       wall_time;
+      };
+      void
+      write_statistics_row(const IncrementRecord &record);
+      void
+      print_increment_line(const IncrementRecord &record,
+                           double                 elapsed,
+                           double                 remaining) const;
+      // Checkpoint of the committed state (forming_problem_checkpoint.cc).
+      void
+      save_checkpoint() const;
+      // Restores the checkpoint of the output directory; cuts the CSV
+      // tables back to their sizes at the checkpoint.
+      void
+      restore_checkpoint();
+      // Opens the CSV tables (appending to them on a resume) and the PVD.
+      void
+      open_output_files(bool resume);
       void
       write_vtu(double load);
       void
@@ -219,6 +272,9 @@ namespace deepdraw
       geometry::SquareCupToolParameters  square_cup_tool_parameters;
       ContactCoupling                    contact;
       fe::ElementParameters              element_parameters;
+      CheckpointParameters               checkpoint_parameters;
+      // All parameters, flattened (a checkpoint refuses another model).
+      std::string parameter_listing;
 
       std::unique_ptr<material::HillPlasticity> material;
       std::unique_ptr<fe::HexahedronElement>    element;
@@ -293,6 +349,11 @@ namespace deepdraw
       io::CsvFile                    tools_file;
       std::vector<unsigned int>      reaction_faces;
       unsigned int                   output_step = 0;
+      // The steps of solution.pvd restored from a checkpoint.
+      std::vector<io::PvdRecord::Entry> resumed_pvd_steps;
+      // Sizes of the CSV tables after the last converged increment's rows
+      // (a checkpoint leaves out the rows of later failed attempts).
+      std::vector<std::pair<std::string, std::uintmax_t>> committed_table_sizes;
 
       // punch_force.csv, draw_in.csv (runs with tools), and the travels
       // of the thickness profiles within the run.

@@ -39,9 +39,10 @@ namespace deepdraw
              const std::vector<Point<3>>                    &initial_vertices,
              const std::vector<std::array<unsigned int, 2>> &column_ends);
 
-      // Opens the tables in directory (runs with tools only).
+      // Opens the tables in directory (runs with tools only), appending to
+      // them on a resumed run.
       void
-      open(const std::string &directory);
+      open(const std::string &directory, bool append = false);
       // One row of each table at the converged load; vertices: the
       // current positions.
       void
