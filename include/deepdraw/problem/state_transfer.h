@@ -1,0 +1,42 @@
+// Transfer of a SimulationState to a refined mesh (doc/theory.md §8,
+// doc/decisions.md D57): the mesh change that adaptive refinement
+// (subsection Adaptivity, issue 13) and a refined restart build on.
+#ifndef deepdraw_problem_state_transfer_h
+#define deepdraw_problem_state_transfer_h
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/grid/tria.h>
+#include <deepdraw/problem/simulation_state.h>
+
+namespace deepdraw
+{
+  namespace problem
+  {
+    using namespace dealii;
+
+    // Refines the triangulation as its refine flags say (isotropic, or any
+    // anisotropic case for the history; coarsening flags are rejected) and
+    // carries the state over:
+    // - displacement fields (total displacement, the displacement blocks
+    //   of the last two Newton solutions) by Q1 interpolation, exact
+    //   because the coarse Q1 space is contained in the refined one; the
+    //   contact blocks [lambda | z] are dropped, the caller appends those of
+    //   the refined mesh's contact pairs;
+    // - quadrature-point history: each child point takes the values of the
+    //   parent's Gauss point nearest to it in the parent's reference cell;
+    //   constant fields are exact, rotations stay orthogonal and every
+    //   point keeps a converged, admissible material state;
+    // - enhanced parameters: cells that were not refined keep theirs,
+    //   children start from zero (they belong to one increment);
+    // - vertices: the refined mesh's (it is in the configuration x_t).
+    // The DoFHandler is redistributed with its element. Throws
+    // std::logic_error if a coarsening flag is set or the state does not
+    // belong to the mesh.
+    void
+    refine_and_transfer(Triangulation<3> &triangulation,
+                        DoFHandler<3>    &dof_handler,
+                        SimulationState  &state);
+  } // namespace problem
+} // namespace deepdraw
+
+#endif
