@@ -42,9 +42,9 @@ namespace
   rotation()
   {
     const double       angle = 0.3;
-    const Tensor<1, 3> axis({1. / std::sqrt(3.), 1. / std::sqrt(3.),
-                             1. / std::sqrt(3.)});
-    Tensor<2, 3>       W;
+    const Tensor<1, 3> axis(
+      {1. / std::sqrt(3.), 1. / std::sqrt(3.), 1. / std::sqrt(3.)});
+    Tensor<2, 3> W;
     W[0][1] = -axis[2], W[0][2] = axis[1], W[1][0] = axis[2];
     W[1][2] = -axis[0], W[2][0] = -axis[1], W[2][1] = axis[0];
     return unit_symmetric_tensor<3>() + std::sin(angle) * W
@@ -94,9 +94,10 @@ namespace
     state.previous_converged_solution = state.converged_solution;
 
     fe::QuadraturePointHistory point;
-    point.state.stress      = SymmetricTensor<2, 3>({200., -50., 10., 5., -3., 7.});
-    point.state.back_stress = SymmetricTensor<2, 3>({12., -6., -6., 1., 0., 2.});
-    point.material_axes     = rotation();
+    point.state.stress = SymmetricTensor<2, 3>({200., -50., 10., 5., -3., 7.});
+    point.state.back_stress
+      = SymmetricTensor<2, 3>({12., -6., -6., 1., 0., 2.});
+    point.material_axes = rotation();
     state.history.assign(8 * block.triangulation.n_active_cells(), point);
     state.enhanced_parameters.resize(block.triangulation.n_active_cells());
     for (auto &cell : state.enhanced_parameters)
@@ -119,45 +120,41 @@ namespace
   check(const Block &block, const std::string &label, const double h_parent)
   {
     const auto &state = block.state;
-    deepdraw_test::check_true(label + ": sizes",
-                              state.history.size()
-                                  == 8 * block.triangulation.n_active_cells()
-                                && state.total_displacement.size()
-                                     == block.dof_handler.n_dofs()
-                                && state.converged_solution.size()
-                                     == block.dof_handler.n_dofs());
-    double constant_error = 0., orthogonality = 0., field_error = 0.;
-    const auto &reference  = state.history.front();
-    const auto  positions  = point_positions(block.triangulation);
+    deepdraw_test::check_true(
+      label + ": sizes",
+      state.history.size() == 8 * block.triangulation.n_active_cells()
+        && state.total_displacement.size() == block.dof_handler.n_dofs()
+        && state.converged_solution.size() == block.dof_handler.n_dofs());
+    double      constant_error = 0., orthogonality = 0., field_error = 0.;
+    const auto &reference = state.history.front();
+    const auto  positions = point_positions(block.triangulation);
     for (unsigned int q = 0; q < state.history.size(); ++q)
     {
       const auto &point = state.history[q];
-      constant_error = std::max({constant_error,
-                                 (point.state.stress - reference.state.stress)
-                                   .norm(),
-                                 (point.state.back_stress
-                                  - reference.state.back_stress)
-                                   .norm(),
-                                 (point.material_axes
-                                  - reference.material_axes)
-                                   .norm()});
-      orthogonality = std::max(orthogonality,
-                               (transpose(point.material_axes)
-                                  * point.material_axes
-                                - unit_symmetric_tensor<3>())
-                                 .norm());
-      field_error
-        = std::max(field_error,
-                   std::abs(point.state.equivalent_plastic_strain
-                            - 0.01 * positions[q][0]));
+      constant_error    = std::max(
+        {constant_error,
+            (point.state.stress - reference.state.stress).norm(),
+            (point.state.back_stress - reference.state.back_stress).norm(),
+            (point.material_axes - reference.material_axes).norm()});
+      orthogonality
+        = std::max(orthogonality,
+                   (transpose(point.material_axes) * point.material_axes
+                    - unit_symmetric_tensor<3>())
+                     .norm());
+      field_error = std::max(field_error,
+                             std::abs(point.state.equivalent_plastic_strain
+                                      - 0.01 * positions[q][0]));
     }
     deepdraw_test::check_close(label + ": constant stress, back stress, axes",
-                               constant_error, 0., 0.);
+                               constant_error,
+                               0.,
+                               0.);
     deepdraw_test::check_close(label + ": R^T R - I", orthogonality, 0., 1e-15);
     // Nearest parent point: in each halved direction the child's points
     // sit at 1/4 -+ 1/(4 sqrt 3) of the parent, its nearest Gauss point at
     // 1/2 - 1/(2 sqrt 3): the largest offset is (3/(4 sqrt 3) - 1/4) h.
-    deepdraw_test::check_close(label + ": linear epbar, largest error (mm of x)",
+    deepdraw_test::check_close(label
+                                 + ": linear epbar, largest error (mm of x)",
                                field_error / 0.01,
                                (0.75 / std::sqrt(3.) - 0.25) * h_parent,
                                1e-12);
@@ -166,12 +163,15 @@ namespace
     for (const auto &cell : block.dof_handler.active_cell_iterators())
       for (const unsigned int v : cell->vertex_indices())
         for (unsigned int c = 0; c < 3; ++c)
-          u_error = std::max(
-            u_error,
-            std::abs(state.total_displacement[cell->vertex_dof_index(v, c)]
-                     - linear_displacement(cell->vertex(v))[c]));
+          u_error
+            = std::max(u_error,
+                       std::abs(
+                         state.total_displacement[cell->vertex_dof_index(v, c)]
+                         - linear_displacement(cell->vertex(v))[c]));
     deepdraw_test::check_close(label + ": u = A X + b at every vertex",
-                               u_error, 0., 1e-14);
+                               u_error,
+                               0.,
+                               1e-14);
   }
 } // namespace
 
@@ -184,7 +184,8 @@ main(int argc, char *argv[])
 
   set_linear_field(block);
   block.triangulation.set_all_refine_flags();
-  problem::refine_and_transfer(block.triangulation, block.dof_handler,
+  problem::refine_and_transfer(block.triangulation,
+                               block.dof_handler,
                                block.state);
   check(block, "global refinement", 3.);
   bool children_zero = true;
@@ -198,14 +199,16 @@ main(int argc, char *argv[])
   // One cell refined: hanging nodes on its faces.
   set_linear_field(block);
   block.triangulation.begin_active()->set_refine_flag();
-  problem::refine_and_transfer(block.triangulation, block.dof_handler,
+  problem::refine_and_transfer(block.triangulation,
+                               block.dof_handler,
                                block.state);
   check(block, "local refinement", 1.5);
   unsigned int kept = 0;
   for (const auto &cell : block.state.enhanced_parameters)
     kept += cell.values[0] == 0.5 ? 1 : 0;
   deepdraw_test::check_true("15 unrefined cells keep their enhanced "
-                            "parameters (" + std::to_string(kept) + ")",
+                            "parameters ("
+                              + std::to_string(kept) + ")",
                             kept == 15);
 
   // Cut in z only: the history is transferred by the same rule.
@@ -228,15 +231,13 @@ main(int argc, char *argv[])
       break;
     }
   }
-  problem::refine_and_transfer(block.triangulation, block.dof_handler,
+  problem::refine_and_transfer(block.triangulation,
+                               block.dof_handler,
                                block.state);
-  deepdraw_test::check_true("cut_z: one cell more ("
-                              + std::to_string(n_before) + " -> "
-                              + std::to_string(
-                                  block.triangulation.n_active_cells())
-                              + ")",
-                            block.triangulation.n_active_cells()
-                              == n_before + 1);
+  deepdraw_test::check_true(
+    "cut_z: one cell more (" + std::to_string(n_before) + " -> "
+      + std::to_string(block.triangulation.n_active_cells()) + ")",
+    block.triangulation.n_active_cells() == n_before + 1);
   check(block, "cut_z refinement", 0.);
   return deepdraw_test::summary();
 }
