@@ -243,16 +243,19 @@ namespace deepdraw
 
         problem::ProcessParameters process;
         process.parse_parameters(prm);
-        double largest_load = process.final_load;
+        // The travels of the thickness profiles a run can reach (as
+        // FormingProblem keeps them): up to the largest final load of the
+        // runs whose values make a valid prm, else of FILE.prm.
+        double largest_load = -1.;
         for (unsigned int run = 0; run < setup.variables[0].values.size();
              ++run)
         {
-          double final_load = process.final_load;
+          double final_load = -1.;
           setup.cases.push_back(make_case(setup, run, final_load));
           largest_load = std::max(largest_load, final_load);
         }
-        // The travels of the thickness profiles a run can reach (as
-        // FormingProblem keeps them).
+        if (largest_load < 0.)
+          largest_load = process.final_load;
         for (const double travel : output.thickness_profile_travels)
           if (travel <= largest_load * (1. + 1e-12))
             setup.travels.push_back(travel);

@@ -121,6 +121,8 @@ namespace deepdraw
     parse_study_options(const std::vector<std::string> &texts,
                         ParameterHandler               &prm)
     {
+      if (texts.empty())
+        throw InputError("a study needs at least one --study option");
       std::vector<StudyVariable> variables;
       std::set<std::string>      names;
       for (const std::string &text : texts)
