@@ -45,8 +45,7 @@ namespace deepdraw
              {"unknowns",
               {{"displacement_unknowns", "displacement"},
                {"contact_unknowns", "contact"}}},
-             {"element aspect ratio (in-plane size / layer)",
-              {{"aspect_ratio", ""}}},
+             {"aspect ratio (in-plane size / layer)", {{"aspect_ratio", ""}}},
              {"increments", {{"increments", ""}}},
              {"Newton iterations", {{"newton_iterations", ""}}},
              {"cut-backs", {{"cut_backs", ""}}},
@@ -55,21 +54,17 @@ namespace deepdraw
           = {{"punch_force_N", "punch force (N)"}};
         for (const std::string &point : spec.draw_in_names)
           quantities.emplace_back(point + "_mm", point + " draw-in (mm)");
-        quantities.insert(
-          quantities.end(),
-          {{"OX_thinning", "OX: smallest ln(t/t0)"},
-           {"OX_thinning_s0_mm", "OX: s0 of the smallest ln(t/t0) (mm)"},
-           {"OD_thinning", "OD: smallest ln(t/t0)"},
-           {"OD_thinning_s0_mm", "OD: s0 of the smallest ln(t/t0) (mm)"}});
-        if (!spec.travels.empty())
-          for (const auto &[quantity, title] : quantities)
-          {
-            Panel panel{title, {}};
-            for (const double travel : spec.travels)
-              panel.curves.push_back({StudyTable::at_travel(quantity, travel),
-                                      travel_label(travel) + " mm"});
-            panels.push_back(panel);
-          }
+        quantities.insert(quantities.end(),
+                          {{"OX_thinning", "OX: smallest ln(t/t0)"},
+                           {"OX_thinning_s0_mm", "OX: its s0 (mm)"},
+                           {"OD_thinning", "OD: smallest ln(t/t0)"},
+                           {"OD_thinning_s0_mm", "OD: its s0 (mm)"}});
+        // A panel per travel: the values at different travels differ by
+        // more than a refinement changes them.
+        for (const auto &[quantity, title] : quantities)
+          for (const double travel : spec.travels)
+            panels.push_back({title + " at " + travel_label(travel) + " mm",
+                              {{StudyTable::at_travel(quantity, travel), ""}}});
         return panels;
       }
 
@@ -97,8 +92,8 @@ namespace deepdraw
         std::ostringstream gp;
         gp << "# Written by deepdraw --study (doc/user_guide.md §4.2); run "
               "'gnuplot study.gp' here.\n"
-           << "set terminal pngcairo size " << 330 * n_columns << ","
-           << 250 * n_rows + 40 << " font ',8' noenhanced\n"
+           << "set terminal pngcairo size " << 280 * n_columns << ","
+           << 200 * n_rows + 30 << " font ',7' noenhanced\n"
            << "set output 'study.png'\n"
            << "set datafile separator ','\n"
            << "set datafile columnheaders\n"

@@ -1,8 +1,7 @@
 // study.png (doc/user_guide.md §4.2, doc/decisions.md D43): every quantity
-// of study.csv against the varied value, one panel per quantity and one
-// curve per travel, drawn by gnuplot from the script study.gp written next
-// to it. Failed runs are left out of the plot (their rows stay in the
-// table).
+// of study.csv against the varied value, one panel per quantity (and per
+// travel), drawn by gnuplot from the script study.gp written next to it.
+// Failed runs are left out of the plot (their rows stay in the table).
 #ifndef deepdraw_app_study_plot_h
 #define deepdraw_app_study_plot_h
 
