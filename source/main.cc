@@ -1,10 +1,12 @@
 // deepdraw: implicit simulation of sheet-metal deep drawing.
 //   deepdraw FILE.prm [--output-directory DIR] [--resume] [--quiet]
+//   deepdraw FILE.prm --study "Subsection/Parameter = v1, v2, ..." [...]
 //   deepdraw --help
 //   deepdraw --print-parameters
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
+#include <deepdraw/app/study.h>
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/problem/forming_problem.h>
 #include <deepdraw/problem/stop_request.h>
@@ -12,12 +14,19 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace
 {
   const char *usage
     = "usage: deepdraw FILE.prm [--output-directory DIR] [--resume] "
       "[--quiet]\n"
+      "       deepdraw FILE.prm [--output-directory DIR]\n"
+      "           --study \"Subsection/Parameter = v1, v2, ...\" ...\n"
+      "                                     refinement study: one run per\n"
+      "                                     value (options of the same length\n"
+      "                                     vary together); study.csv and\n"
+      "                                     study.png in the output directory\n"
       "       deepdraw --print-parameters   print all parameters, documented,\n"
       "                                     with their default values\n"
       "       deepdraw --help               print this text\n"
@@ -55,8 +64,9 @@ main(int argc, char *argv[])
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   dealii::deal_II_exceptions::disable_abort_on_exception();
 
-  std::string         prm_file, output_directory;
-  problem::RunOptions options;
+  std::string              prm_file, output_directory;
+  std::vector<std::string> study_options;
+  problem::RunOptions      options;
   for (int i = 1; i < argc; ++i)
   {
     const std::string argument = argv[i];
@@ -78,6 +88,8 @@ main(int argc, char *argv[])
       options.resume = true;
     else if (argument == "--quiet")
       options.quiet = true;
+    else if (argument == "--study" && i + 1 < argc)
+      study_options.push_back(argv[++i]);
     else if (!argument.empty() && argument[0] != '-' && prm_file.empty())
       prm_file = argument;
     else
@@ -91,6 +103,8 @@ main(int argc, char *argv[])
     std::cerr << usage;
     return 1;
   }
+  if (!study_options.empty())
+    return app::run_study(prm_file, output_directory, study_options);
 
   std::unique_ptr<problem::FormingProblem> forming_problem;
   try

@@ -7,12 +7,21 @@ into the source tree. With --source-dir, the work directory gets a link
 prm -> <source-dir>/prm, so that a test can `include prm/<shipped>.prm`
 (ParameterHandler opens include files relative to the working directory;
 the same line works when deepdraw is started from the repository root, as
-in doc/user_guide.md) and a broken shipped prm fails its tests. Then, in this order and if present next to the prm:
+in doc/user_guide.md) and a broken shipped prm fails its tests. If present
+next to the prm:
+  <name>.args            more command-line arguments, one per line (a line
+                         is one argument, spaces included), e.g. --study
+                         options;
+  <name>.exit_code       the exit code the run must end with (default 0;
+                         the checks below still run).
+Then, in this order and if present next to the prm:
   <name>.expected_error  the run must fail (non-zero exit), its output must
                          contain every non-empty line of this file, and the
                          output directory must not have been created;
-  <name>.check.py        called as: python3 check.py <output-dir>; it asserts
-                         the physics and exits non-zero on failure;
+  <name>.check.py        called as: python3 check.py <output-dir> in the
+                         work directory, with the executable in the
+                         environment variable DEEPDRAW; it asserts the
+                         physics and exits non-zero on failure;
   <name>.reference/      every file in it is compared with the output file of
                          the same name by numdiff, with the tolerances given
                          in <name>.reference/NUMDIFF (one line of options).
@@ -51,6 +60,13 @@ def main():
     output = work / "output"
 
     command = [args.deepdraw, str(prm), "--output-directory", str(output)]
+    extra = pathlib.Path(str(stem) + ".args")
+    if extra.exists():
+        command += [line for line in extra.read_text().splitlines()
+                    if line.strip()]
+    exit_code_file = pathlib.Path(str(stem) + ".exit_code")
+    expected_code = (int(exit_code_file.read_text())
+                     if exit_code_file.exists() else 0)
     print("running:", " ".join(command), flush=True)
     run = subprocess.run(command, cwd=work, stdout=subprocess.PIPE,
                          stderr=subprocess.STDOUT, text=True)
@@ -69,12 +85,15 @@ def main():
         print("PASSED: the run failed with the expected message")
         return
 
-    if run.returncode != 0:
-        sys.exit("FAILED: deepdraw exited with code %d" % run.returncode)
+    if run.returncode != expected_code:
+        sys.exit("FAILED: deepdraw exited with code %d, expected %d"
+                 % (run.returncode, expected_code))
 
     check = pathlib.Path(str(stem) + ".check.py")
     if check.exists():
-        result = subprocess.run([sys.executable, str(check), str(output)])
+        result = subprocess.run([sys.executable, str(check), str(output)],
+                                cwd=work,
+                                env=dict(os.environ, DEEPDRAW=args.deepdraw))
         if result.returncode != 0:
             sys.exit("FAILED: " + check.name)
 

@@ -1,0 +1,50 @@
+// One run of a refinement study (doc/user_guide.md §4.2, doc/decisions.md
+// D42): the same executable started as a child process on the run's
+// input.prm, its console output kept in the run folder, its exit code and
+// its last message on stderr as the reason of a failure, and the wall time
+// measured around it.
+#ifndef deepdraw_app_study_run_h
+#define deepdraw_app_study_run_h
+
+#include <string>
+#include <vector>
+
+namespace deepdraw
+{
+  namespace app
+  {
+    struct StudyRunOutcome
+    {
+      // The child's exit code (doc/user_guide.md §1), or -1 if it could not
+      // be started or was killed by a signal.
+      int exit_code = -1;
+      // Empty when it exited with 0; else its last message on stderr (from
+      // the last line that starts with "deepdraw:", joined on one line), or
+      // the exit code or signal if it wrote none.
+      std::string failure;
+      // From the start of the child to its end, s.
+      double wall_seconds = 0.;
+    };
+
+    // Runs `executable input_prm --output-directory run_directory` in the
+    // current directory (include paths of prm files are relative to it),
+    // stdout to run_directory/deepdraw.log, stderr to deepdraw.err, stdin
+    // from /dev/null, and waits for it. run_directory must exist.
+    StudyRunOutcome
+    run_deepdraw(const std::string &executable,
+                 const std::string &input_prm,
+                 const std::string &run_directory);
+
+    // Runs program (searched in PATH) with arguments in directory, its
+    // output to log_file; returns its exit code, or -1 if it could not be
+    // started (errno in *start_error) or was killed.
+    int
+    run_program(const std::string              &program,
+                const std::vector<std::string> &arguments,
+                const std::string              &directory,
+                const std::string              &log_file,
+                int                            *start_error = nullptr);
+  } // namespace app
+} // namespace deepdraw
+
+#endif
