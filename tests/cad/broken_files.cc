@@ -2,8 +2,9 @@
 // face for a face that cannot be converted) from read_cad_tool, and, run
 // through the deepdraw executable (path in the environment variable
 // DEEPDRAW, set by tests/CMakeLists.txt), exit code 2 with that message and
-// no output directory. The files are made here: empty, text, cut in half,
-// unknown extension, missing, and STEP files with a face on an offset
+// no output directory. The files are made here: empty, text, cut short at
+// 20 places, unknown extension, missing, with surfaces of an unknown
+// entity type, and STEP files with a face on an offset
 // B-spline surface (OpenCASCADE could only approximate it) and a face of
 // degree 16 (above BezierPatch::max_degree); through the executable also an
 // IGES file with a damaged entity type, on which OpenCASCADE crashes.

@@ -120,6 +120,14 @@ namespace
     const RigidTool tool = read_cad_tool(filename, "plate", options, &report);
     std::cout << filename << ": " << report.summary() << std::endl;
     check_true(filename + ": one trimmed face", report.n_trimmed_faces == 1);
+    if (tool.trimming(0).trimmed())
+    {
+      std::cout << "  trimming polygons:";
+      for (const auto &loop : tool.trimming(0).domain->loops())
+        std::cout << " " << loop.size();
+      std::cout << " vertices, tolerance "
+                << tool.trimming(0).domain->tolerance() << " mm" << std::endl;
+    }
 
     std::mt19937                           random(7);
     std::uniform_real_distribution<double> unit(0., 1.);
