@@ -108,20 +108,25 @@ namespace deepdraw::geometry
       fail("the face has no surface");
 
     // What GeomConvert will convert, and whether it can do so exactly.
+    // Trimmed and offset surfaces are unwrapped (in any nesting): the face's
+    // range bounds the surface anyway, and an offset is exact only through
+    // its equivalent elementary surface.
     Handle(Geom_Surface) basis = surface;
-    if (basis->IsKind(STANDARD_TYPE(Geom_RectangularTrimmedSurface)))
-      basis = Handle(Geom_RectangularTrimmedSurface)::DownCast(basis)
-                ->BasisSurface();
-    if (basis->IsKind(STANDARD_TYPE(Geom_OffsetSurface)))
-    {
-      const Handle(Geom_OffsetSurface) offset
-        = Handle(Geom_OffsetSurface)::DownCast(basis);
-      basis = offset->Surface(); // the equivalent surface, if there is one
-      if (basis.IsNull())
-        fail("an offset surface of a " + type_name(offset->BasisSurface())
-             + " has no exact rational form (OpenCASCADE could only "
-               "approximate it)");
-    }
+    while (basis->IsKind(STANDARD_TYPE(Geom_RectangularTrimmedSurface))
+           || basis->IsKind(STANDARD_TYPE(Geom_OffsetSurface)))
+      if (basis->IsKind(STANDARD_TYPE(Geom_RectangularTrimmedSurface)))
+        basis = Handle(Geom_RectangularTrimmedSurface)::DownCast(basis)
+                  ->BasisSurface();
+      else
+      {
+        const Handle(Geom_OffsetSurface) offset
+          = Handle(Geom_OffsetSurface)::DownCast(basis);
+        basis = offset->Surface(); // the equivalent surface, if there is one
+        if (basis.IsNull())
+          fail("an offset surface of a " + type_name(offset->BasisSurface())
+               + " has no exact rational form (OpenCASCADE could only "
+                 "approximate it)");
+      }
     ParameterMap map = ParameterMap::through_point;
     if (basis->IsKind(STANDARD_TYPE(Geom_BSplineSurface))
         || basis->IsKind(STANDARD_TYPE(Geom_Plane)))
