@@ -94,13 +94,13 @@ namespace deepdraw::geometry
 
 
   CadFacePatches
-  convert_cad_face(const TopoDS_Face &face,
-                   const std::string &face_label,
-                   const std::string &filename,
-                   const double       trimming_tolerance)
+  convert_cad_face(const TopoDS_Face                  &face,
+                   const std::function<std::string()> &face_label,
+                   const std::string                  &filename,
+                   const double                        trimming_tolerance)
   {
     const auto fail = [&](const std::string &message)
-    { throw InputError(filename + ": " + face_label + ": " + message); };
+    { throw InputError(filename + ": " + face_label() + ": " + message); };
 
     // The surface at its place (a copy moved by the face's location).
     const Handle(Geom_Surface) surface = BRep_Tool::Surface(face);

@@ -143,7 +143,9 @@ namespace deepdraw::geometry
       double                            unit_in_mm = 1.;
 
       // "face 3 (STEP entity #51)": the face's number in the shape
-      // (TopExp::MapShapes order) and, if OpenCASCADE can tell, its entity.
+      // (TopExp::MapShapes order) and, if OpenCASCADE can tell, its entity
+      // (a search through all transferred entities: asked for on errors
+      // only).
       std::string
       face_label(const TopoDS_Shape &face, const unsigned int number) const
       {
@@ -557,10 +559,11 @@ namespace deepdraw::geometry
     for (int f = 1; f <= faces.Extent(); ++f)
       try
       {
-        converted[f - 1] = convert_cad_face(TopoDS::Face(faces(f)),
-                                            file.face_label(faces(f), f),
-                                            filename,
-                                            trimming_tolerance);
+        converted[f - 1] = convert_cad_face(
+          TopoDS::Face(faces(f)),
+          [&]() { return file.face_label(faces(f), f); },
+          filename,
+          trimming_tolerance);
       }
       catch (const Standard_Failure &failure)
       {

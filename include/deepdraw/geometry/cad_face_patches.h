@@ -21,6 +21,7 @@
 #include <deal.II/base/point.h>
 #include <deepdraw/geometry/bezier_patch.h>
 #include <deepdraw/geometry/trimmed_domain.h>
+#include <functional>
 #include <string>
 #include <vector>
 // OpenCASCADE after deal.II (its macro Handle() breaks Sacado::Handle).
@@ -52,14 +53,14 @@ namespace deepdraw::geometry
     std::vector<BoundaryEdge> boundary;
   };
 
-  // Throws InputError "<filename>: <face_label>: ..." if the face's surface
+  // Throws InputError "<filename>: <face_label()>: ..." if the face's surface
   // is missing, cannot be converted exactly, or has a degree above
   // BezierPatch::max_degree.
   CadFacePatches
-  convert_cad_face(const TopoDS_Face &face,
-                   const std::string &face_label,
-                   const std::string &filename,
-                   double             trimming_tolerance);
+  convert_cad_face(const TopoDS_Face                  &face,
+                   const std::function<std::string()> &face_label,
+                   const std::string                  &filename,
+                   double                              trimming_tolerance);
 
   // The patch reversed in s (normal flipped), its trimming map adjusted.
   void
