@@ -171,6 +171,11 @@ namespace deepdraw::geometry
       {
         EdgeState     &state    = edge_states[j][e];
         const EdgeKind declared = declared_kinds[j][e];
+        // A declared edge of an earlier patch is settled (the new patch
+        // can only cover automatic ones): skipping it keeps adding n
+        // patches with declared edges (CAD tools) at O(n) each.
+        if (j < k && declared != EdgeKind::automatic)
+          continue;
         state.free
           = (declared == EdgeKind::free)
             || (declared == EdgeKind::automatic
@@ -178,7 +183,25 @@ namespace deepdraw::geometry
                                 state.covered.end(),
                                 [](const bool covered) { return covered; }));
       }
-    update_bounding_box();
+    // The box grows by the new control points (min and max are exact, so
+    // this is the box update_bounding_box() would compute).
+    if (k == 0)
+      update_bounding_box();
+    else
+    {
+      std::pair<dealii::Point<3>, dealii::Point<3>> corners
+        = current_box.get_boundary_points();
+      for (const dealii::Point<3> &point : patch.control_points())
+      {
+        const dealii::Point<3> x = to_global(point);
+        for (unsigned int d = 0; d < 3; ++d)
+        {
+          corners.first[d]  = std::min(corners.first[d], x[d]);
+          corners.second[d] = std::max(corners.second[d], x[d]);
+        }
+      }
+      current_box = dealii::BoundingBox<3>(corners);
+    }
   }
 
 
