@@ -3,10 +3,13 @@
 //   deepdraw FILE.prm --study "Subsection/Parameter = v1, v2, ..." [...]
 //   deepdraw --help
 //   deepdraw --print-parameters
+//   deepdraw --write-square-cup-tools DIR [FILE.prm]
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deepdraw/app/study.h>
+#include <deepdraw/geometry/cad_tool_writer.h>
+#include <deepdraw/geometry/square_cup_tools.h>
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/problem/forming_problem.h>
 #include <deepdraw/problem/stop_request.h>
@@ -29,6 +32,15 @@ namespace
       "                                     study.png in the output directory\n"
       "       deepdraw --print-parameters   print all parameters, documented,\n"
       "                                     with their default values\n"
+      "       deepdraw --write-square-cup-tools DIR [FILE.prm]\n"
+      "                                     write the square-cup punch, die "
+      "and\n"
+      "                                     blank holder (subsection Tools "
+      "and\n"
+      "                                     Geometry/Thickness of FILE.prm, "
+      "or\n"
+      "                                     the defaults) as STEP and IGES "
+      "files\n"
       "       deepdraw --help               print this text\n"
       "\n"
       "Runs the forming simulation described by FILE.prm and writes the "
@@ -53,6 +65,55 @@ namespace
       message.pop_back();
     const auto start = message.find_first_not_of(" \n");
     return start == std::string::npos ? message : message.substr(start);
+  }
+
+  // --write-square-cup-tools DIR [FILE.prm]: the built-in tools as STEP and
+  // IGES files (doc/tool_files.md, CAD tools), to check the CAD reader
+  // against the exact builder or to start a CAD model from.
+  int
+  write_square_cup_tools(const std::string &directory,
+                         const std::string &prm_file)
+  {
+    using namespace deepdraw;
+    try
+    {
+      dealii::ParameterHandler prm;
+      problem::FormingProblem::declare_parameters(prm);
+      if (!prm_file.empty())
+      {
+        if (!std::ifstream(prm_file))
+          throw InputError("cannot open the parameter file '" + prm_file + "'");
+        prm.parse_input(prm_file);
+      }
+      geometry::SquareCupToolParameters tools;
+      tools.parse_parameters(prm);
+      prm.enter_subsection("Geometry");
+      const double thickness = prm.get_double("Thickness");
+      prm.leave_subsection();
+      for (const std::string &file : geometry::write_cad_tool_files(
+             geometry::build_square_cup_tools(tools, thickness),
+             directory))
+        std::cout << "deepdraw: wrote " << file << std::endl;
+    }
+    catch (const InputError &error)
+    {
+      std::cerr << "deepdraw: error in the input: " << error.what()
+                << std::endl;
+      return 2;
+    }
+    catch (const dealii::ExceptionBase &error)
+    {
+      std::cerr << "deepdraw: error in " << prm_file << ": "
+                << deal_ii_message(error) << std::endl;
+      return 2;
+    }
+    catch (const std::exception &error)
+    {
+      std::cerr << "deepdraw: cannot write the tools to " << directory << ": "
+                << error.what() << std::endl;
+      return 2;
+    }
+    return 0;
   }
 } // namespace
 
@@ -82,6 +143,10 @@ main(int argc, char *argv[])
       prm.print_parameters(std::cout, dealii::ParameterHandler::PRM);
       return 0;
     }
+    else if (argument == "--write-square-cup-tools" && i + 1 < argc
+             && (i + 2 == argc || (i + 3 == argc && argv[i + 2][0] != '-')))
+      return write_square_cup_tools(argv[i + 1],
+                                    i + 2 < argc ? argv[i + 2] : "");
     else if (argument == "--output-directory" && i + 1 < argc)
       output_directory = argv[++i];
     else if (argument == "--resume")

@@ -131,8 +131,18 @@ namespace deepdraw::geometry
   void
   RigidTool::add_patch(const BezierPatch &patch, const EdgeKinds &edges)
   {
+    add_patch(patch, edges, PatchTrimming());
+  }
+
+
+  void
+  RigidTool::add_patch(const BezierPatch   &patch,
+                       const EdgeKinds     &edges,
+                       const PatchTrimming &trimming)
+  {
     const unsigned int k = patch_list.size();
     patch_list.push_back(patch);
+    trimmings.push_back(trimming);
     local_boxes.push_back(box_array(patch.bounding_box()));
     scale = std::max(scale, patch.length_scale());
     declared_kinds.push_back(edges);
@@ -161,6 +171,11 @@ namespace deepdraw::geometry
       {
         EdgeState     &state    = edge_states[j][e];
         const EdgeKind declared = declared_kinds[j][e];
+        // A declared edge of an earlier patch is settled (the new patch
+        // can only cover automatic ones): skipping it keeps adding n
+        // patches with declared edges (CAD tools) at O(n) each.
+        if (j < k && declared != EdgeKind::automatic)
+          continue;
         state.free
           = (declared == EdgeKind::free)
             || (declared == EdgeKind::automatic
@@ -168,7 +183,25 @@ namespace deepdraw::geometry
                                 state.covered.end(),
                                 [](const bool covered) { return covered; }));
       }
-    update_bounding_box();
+    // The box grows by the new control points (min and max are exact, so
+    // this is the box update_bounding_box() would compute).
+    if (k == 0)
+      update_bounding_box();
+    else
+    {
+      std::pair<dealii::Point<3>, dealii::Point<3>> corners
+        = current_box.get_boundary_points();
+      for (const dealii::Point<3> &point : patch.control_points())
+      {
+        const dealii::Point<3> x = to_global(point);
+        for (unsigned int d = 0; d < 3; ++d)
+        {
+          corners.first[d]  = std::min(corners.first[d], x[d]);
+          corners.second[d] = std::max(corners.second[d], x[d]);
+        }
+      }
+      current_box = dealii::BoundingBox<3>(corners);
+    }
   }
 
 
@@ -209,6 +242,14 @@ namespace deepdraw::geometry
     AssertIndexRange(patch, patch_list.size());
     AssertIndexRange(edge, 4);
     return edge_states[patch][edge].free;
+  }
+
+
+  const PatchTrimming &
+  RigidTool::trimming(const unsigned int patch) const
+  {
+    AssertIndexRange(patch, patch_list.size());
+    return trimmings[patch];
   }
 
 
@@ -330,9 +371,13 @@ namespace deepdraw::geometry
     unsigned int    best_patch   = 0;
     bool            found        = false;
     bool            best_on_edge = false;
+    // A foot outside its trimming loops is no closest point of the trimmed
+    // face (that lies on the loops, farther away): farther patches may
+    // still hold the closest point, so the search goes on.
+    bool best_outside = false;
     for (unsigned int c = 0; c < n_candidates; ++c)
     {
-      if (found)
+      if (found && !best_outside)
       {
         const double reach = best.distance + tie_tolerance;
         if (candidates[c].first > reach * reach)
@@ -343,13 +388,21 @@ namespace deepdraw::geometry
       const bool on_edge = *std::max_element(projection.beyond_edge.begin(),
                                              projection.beyond_edge.end())
                            > edge_tolerance;
-      if (!found || projection.distance < best.distance - tie_tolerance
-          || (projection.distance <= best.distance + tie_tolerance
-              && best_on_edge && !on_edge))
+      const bool outside = trimmings[k].trimmed()
+                           && !trimmings[k].contains(projection.u,
+                                                     projection.v,
+                                                     projection.point.x_u,
+                                                     projection.point.x_v);
+      if (!found || (best_outside && !outside)
+          || (outside == best_outside
+              && (projection.distance < best.distance - tie_tolerance
+                  || (projection.distance <= best.distance + tie_tolerance
+                      && best_on_edge && !on_edge))))
       {
         best         = projection;
         best_patch   = k;
         best_on_edge = on_edge;
+        best_outside = outside;
         found        = true;
       }
     }
@@ -370,7 +423,8 @@ namespace deepdraw::geometry
     result.v                       = best.v;
     result.patch                   = best_patch;
     result.on_edge                 = best_on_edge;
-    result.on_free_edge            = false;
+    result.outside_trimming        = best_outside;
+    result.on_free_edge            = best_outside;
     for (unsigned int e = 0; e < 4; ++e)
       if (best.beyond_edge[e] > edge_tolerance
           && edge_states[best_patch][e].free)

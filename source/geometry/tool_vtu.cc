@@ -1,7 +1,9 @@
+#include <array>
 #include <cmath>
 #include <deal.II/base/exceptions.h>
 #include <deepdraw/geometry/tool_vtu.h>
 #include <fstream>
+#include <vector>
 
 namespace deepdraw::geometry
 {
@@ -20,9 +22,33 @@ namespace deepdraw::geometry
 
     const unsigned int n_side   = subdivisions + 1;
     const unsigned int n_points = tool.n_patches() * n_side * n_side;
-    const unsigned int n_cells
-      = tool.n_patches() * 2 * subdivisions * subdivisions;
-    const auto &rotation = tool.rotation();
+    const auto        &rotation = tool.rotation();
+
+    // Two triangles per grid square; on a trimmed patch only the squares
+    // whose centre lies inside the face's loops (doc/tool_files.md, CAD
+    // tools).
+    std::vector<std::array<unsigned int, 3>> triangles;
+    std::vector<unsigned int>                triangle_patch;
+    for (unsigned int k = 0; k < tool.n_patches(); ++k)
+      for (unsigned int j = 0; j < subdivisions; ++j)
+        for (unsigned int i = 0; i < subdivisions; ++i)
+        {
+          const PatchTrimming &trimming = tool.trimming(k);
+          if (trimming.trimmed())
+          {
+            const double       s     = (i + 0.5) / subdivisions;
+            const double       t     = (j + 0.5) / subdivisions;
+            const SurfacePoint point = tool.patch(k).derivatives(s, t);
+            if (!trimming.contains(s, t, point.x_u, point.x_v))
+              continue;
+          }
+          const unsigned int v00 = k * n_side * n_side + j * n_side + i;
+          const unsigned int v10 = v00 + 1, v01 = v00 + n_side, v11 = v01 + 1;
+          triangles.push_back({{v00, v10, v11}});
+          triangles.push_back({{v00, v11, v01}});
+          triangle_patch.insert(triangle_patch.end(), 2, k);
+        }
+    const unsigned int n_cells = triangles.size();
 
     out << "<?xml version=\"1.0\"?>\n"
         << "<!-- tool '" << tool.name() << "', " << tool.n_patches()
@@ -45,15 +71,8 @@ namespace deepdraw::geometry
     out
       << "</DataArray>\n</Points>\n<Cells>\n"
       << "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-    for (unsigned int k = 0; k < tool.n_patches(); ++k)
-      for (unsigned int j = 0; j < subdivisions; ++j)
-        for (unsigned int i = 0; i < subdivisions; ++i)
-        {
-          const unsigned int v00 = k * n_side * n_side + j * n_side + i;
-          const unsigned int v10 = v00 + 1, v01 = v00 + n_side, v11 = v01 + 1;
-          out << v00 << ' ' << v10 << ' ' << v11 << '\n'
-              << v00 << ' ' << v11 << ' ' << v01 << '\n';
-        }
+    for (const auto &triangle : triangles)
+      out << triangle[0] << ' ' << triangle[1] << ' ' << triangle[2] << '\n';
     out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" "
            "format=\"ascii\">\n";
     for (unsigned int c = 1; c <= n_cells; ++c)
@@ -81,9 +100,8 @@ namespace deepdraw::geometry
         }
     out << "</DataArray>\n</PointData>\n<CellData Scalars=\"patch\">\n"
         << "<DataArray type=\"Int32\" Name=\"patch\" format=\"ascii\">\n";
-    for (unsigned int k = 0; k < tool.n_patches(); ++k)
-      for (unsigned int c = 0; c < 2 * subdivisions * subdivisions; ++c)
-        out << k << '\n';
+    for (const unsigned int k : triangle_patch)
+      out << k << '\n';
     out << "</DataArray>\n</CellData>\n</Piece>\n</UnstructuredGrid>\n</"
            "VTKFile>\n";
     AssertThrow(out, dealii::ExcMessage("Error while writing " + filename));

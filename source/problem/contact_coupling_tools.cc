@@ -1,12 +1,16 @@
 // ContactCoupling, part 1: the tool slots `Contact/Tool 1..4` (their
-// parameters) and the tools they make (square-cup builder or tool files);
+// parameters) and the tools they make (square-cup builder, tool files or
+// STEP / IGES files, doc/tool_files.md);
 // the pairs, their assembly and the holder equation are in
 // contact_coupling.cc.
 #include <deal.II/base/utilities.h>
+#include <deepdraw/geometry/cad_tool_reader.h>
 #include <deepdraw/geometry/tool_file.h>
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/problem/contact_coupling.h>
+#include <filesystem>
 #include <fstream>
+#include <iostream>
 
 namespace deepdraw
 {
@@ -93,17 +97,36 @@ namespace deepdraw
                           "unused.");
         prm.declare_entry("Geometry",
                           "file",
-                          Patterns::Selection("file|square cup punch|"
+                          Patterns::Selection("file|cad|square cup punch|"
                                               "square cup die|"
                                               "square cup blank holder"),
                           "Where the tool surface comes from: a tool file "
-                          "(see doc/tool_files.md) or one of the square-cup "
-                          "tools built from subsection Tools.");
+                          "(see doc/tool_files.md), a STEP or IGES file "
+                          "(cad), or one of the square-cup tools built from "
+                          "subsection Tools.");
         prm.declare_entry("File",
                           "",
                           Patterns::Anything(),
-                          "Tool file (Geometry = file), relative to the "
-                          "directory of the parameter file.");
+                          "Tool file (Geometry = file) or STEP / IGES file "
+                          "(Geometry = cad: .step, .stp, .iges, .igs), "
+                          "relative to the directory of the parameter file.");
+        prm.declare_entry("Length unit",
+                          "file",
+                          Patterns::Selection("file|mm|cm|m|inch"),
+                          "Geometry = cad: 'file' takes the length unit the "
+                          "CAD file declares (converted to mm); mm, cm, m, "
+                          "inch: the file's numbers are in that unit, "
+                          "whatever it declares.");
+        prm.declare_entry("Normals",
+                          "automatic",
+                          Patterns::Selection("automatic|as in file|reversed"),
+                          "Geometry = cad: 'automatic' turns every connected "
+                          "set of faces whose normals point away from the "
+                          "sheet on average (Sheet surface top: the tool is "
+                          "above the sheet, bottom: below) to face it; a "
+                          "closed shell keeps its outward normals. 'as in "
+                          "file': the faces' normals as written (outward "
+                          "for a solid); 'reversed': all of them reversed.");
         prm.declare_entry("Sheet surface",
                           "top",
                           Patterns::Selection("top|bottom"),
@@ -156,14 +179,15 @@ namespace deepdraw
         tool.name = Utilities::trim(prm.get("Name"));
         if (!tool.name.empty())
         {
-          tool.geometry = prm.get("Geometry");
-          tool.file     = Utilities::trim(prm.get("File"));
-          if (tool.geometry == "file")
+          tool.geometry    = prm.get("Geometry");
+          tool.file        = Utilities::trim(prm.get("File"));
+          tool.length_unit = prm.get("Length unit");
+          tool.normals     = prm.get("Normals");
+          if (tool.geometry == "file" || tool.geometry == "cad")
           {
             if (tool.file.empty())
-              throw InputError(prefix
-                               + "File: a tool file is needed when "
-                                 "Geometry = file");
+              throw InputError(prefix + "File: a tool file is needed when "
+                               + "Geometry = " + tool.geometry);
             if (tool.file[0] != '/')
               tool.file = prm_directory + "/" + tool.file;
             if (!std::ifstream(tool.file))
@@ -200,7 +224,9 @@ namespace deepdraw
     void
     ContactCoupling::create_tools(
       const geometry::SquareCupToolParameters &square_cup,
-      const double                             sheet_thickness)
+      const double                             sheet_thickness,
+      const bool                               symmetry_plane_x,
+      const bool                               symmetry_plane_y)
     {
       tool_list.clear();
       std::vector<geometry::RigidTool> square_cup_tools;
@@ -209,6 +235,28 @@ namespace deepdraw
         geometry::RigidTool tool;
         if (definition.geometry == "file")
           tool = geometry::read_tool_file(definition.file);
+        else if (definition.geometry == "cad")
+        {
+          geometry::CadToolOptions options;
+          options.length_unit = definition.length_unit;
+          options.normals     = definition.normals == "as in file"
+                                  ? geometry::CadNormals::as_in_file
+                                  : (definition.normals == "reversed"
+                                       ? geometry::CadNormals::reversed
+                                       : geometry::CadNormals::automatic);
+          // A tool on the top surface lies above the sheet.
+          options.towards_sheet
+            = Tensor<1, 3>({0., 0., definition.sheet_face == 5 ? -1. : 1.});
+          options.symmetry_plane_x = symmetry_plane_x;
+          options.symmetry_plane_y = symmetry_plane_y;
+          geometry::CadToolReport report;
+          tool = geometry::read_cad_tool(definition.file,
+                                         definition.name,
+                                         options,
+                                         &report);
+          std::cout << "deepdraw: tool '" << definition.name << "' from "
+                    << definition.file << ": " << report.summary() << std::endl;
+        }
         else
         {
           if (square_cup_tools.empty())

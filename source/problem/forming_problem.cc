@@ -165,7 +165,10 @@ namespace deepdraw
       types::global_dof_index n_unknowns = dof_handler.n_dofs();
       if (contact.active())
       {
-        contact.create_tools(square_cup_tool_parameters, geometry.thickness);
+        contact.create_tools(square_cup_tool_parameters,
+                             geometry.thickness,
+                             geometry.symmetry_plane_x,
+                             geometry.symmetry_plane_y);
         const double element_size
           = std::sqrt(geometry.length / geometry.elements_along_x
                       * geometry.width / geometry.elements_along_y);

@@ -43,6 +43,9 @@ namespace deepdraw::geometry
     // patch continues, e.g. the blank holder's inner contour): x is beside
     // the tool, the contact code treats it as "not in contact".
     bool on_free_edge = false;
+    // The foot lies outside the trimming loops of its patch's CAD face
+    // (doc/tool_files.md, CAD tools); on_free_edge is then set too.
+    bool outside_trimming = false;
   };
 } // namespace deepdraw::geometry
 

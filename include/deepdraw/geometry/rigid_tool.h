@@ -11,6 +11,10 @@
 // sample points along them lie on another patch of the tool (see
 // doc/tool_files.md). A point whose foot is clamped onto a free edge is
 // flagged in ProjectionResult::on_free_edge.
+//
+// Trimming: a patch of a trimmed CAD face carries the face's trimming loops
+// (PatchTrimming); a foot outside them is not in contact with that face and
+// is flagged like a foot on a free edge (doc/tool_files.md, CAD tools).
 #ifndef deepdraw_geometry_rigid_tool_h
 #define deepdraw_geometry_rigid_tool_h
 
@@ -20,6 +24,7 @@
 #include <deal.II/base/tensor.h>
 #include <deepdraw/geometry/bezier_patch.h>
 #include <deepdraw/geometry/projection_result.h>
+#include <deepdraw/geometry/trimmed_domain.h>
 #include <functional>
 #include <string>
 #include <vector>
@@ -57,6 +62,11 @@ namespace deepdraw::geometry
                                            EdgeKind::automatic,
                                            EdgeKind::automatic,
                                            EdgeKind::automatic}});
+    // The same for a patch of a trimmed face.
+    void
+    add_patch(const BezierPatch   &patch,
+              const EdgeKinds     &edges,
+              const PatchTrimming &trimming);
 
     unsigned int
     n_patches() const;
@@ -70,6 +80,8 @@ namespace deepdraw::geometry
     // As resolved: is the edge free?
     bool
     is_free_edge(unsigned int patch, unsigned int edge) const;
+    const PatchTrimming &
+    trimming(unsigned int patch) const;
 
     // Current placement: x = rotation · X + translation. The rotation must be
     // proper orthogonal.
@@ -94,7 +106,10 @@ namespace deepdraw::geometry
     // is within search_distance; false if no patch is that close. Patches
     // are visited nearest box first and skipped once their box is farther
     // than the best foot found; of two equally near feet, an unclamped one
-    // wins over one clamped onto an edge. Thread-safe.
+    // wins over one clamped onto an edge. A foot outside its patch's
+    // trimming loops loses against any foot inside (however far, within
+    // search_distance), and the search goes on while the best foot is such
+    // a one. Thread-safe.
     bool
     project(const dealii::Point<3> &x,
             ProjectionResult       &result,
@@ -121,6 +136,7 @@ namespace deepdraw::geometry
     std::vector<BezierPatch>              patch_list;
     std::vector<EdgeKinds>                declared_kinds;
     std::vector<std::array<EdgeState, 4>> edge_states;
+    std::vector<PatchTrimming>            trimmings;
     // Control-net boxes in the tool frame, as plain arrays for the culling.
     std::vector<std::array<double, 6>> local_boxes;
     double                             scale = 0.;

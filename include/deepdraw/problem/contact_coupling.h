@@ -40,9 +40,12 @@ namespace deepdraw
     {
       std::string name;
       // "square cup punch", "square cup die", "square cup blank holder",
-      // or "file" (then `file`).
+      // "file" or "cad" (then `file`).
       std::string geometry;
       std::string file;
+      // Geometry = cad: Length unit and Normals of the slot.
+      std::string length_unit = "file";
+      std::string normals     = "automatic";
       // Boundary id of the sheet face it touches: 4 bottom, 5 top.
       unsigned int sheet_face       = 5;
       bool         force_controlled = false;
@@ -72,10 +75,13 @@ namespace deepdraw
       active() const;
 
       // Builds the tools (square-cup builder tools need the geometry of
-      // subsection Tools and the sheet thickness).
+      // subsection Tools and the sheet thickness; a free edge of a CAD
+      // tool in a symmetry plane of the model is a symmetry edge).
       void
       create_tools(const geometry::SquareCupToolParameters &square_cup,
-                   double                                   sheet_thickness);
+                   double                                   sheet_thickness,
+                   bool                                     symmetry_plane_x,
+                   bool                                     symmetry_plane_y);
 
       // One pair per (vertex on the tool's sheet face, tool). vertex_dofs
       // gives the 3 displacement dofs of a vertex; unknowns of the
