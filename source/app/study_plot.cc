@@ -92,8 +92,9 @@ namespace deepdraw
         std::ostringstream gp;
         gp << "# Written by deepdraw --study (doc/user_guide.md §4.2); run "
               "'gnuplot study.gp' here.\n"
-           << "set terminal pngcairo size " << 280 * n_columns << ","
-           << 200 * n_rows + 30 << " font ',7' noenhanced\n"
+           // libgd's png: a palette image, a quarter of pngcairo's size.
+           << "set terminal png size " << 280 * n_columns << ","
+           << 200 * n_rows + 30 << " font 'DejaVuSans,7' noenhanced\n"
            << "set output 'study.png'\n"
            << "set datafile separator ','\n"
            << "set datafile columnheaders\n"
