@@ -69,6 +69,7 @@ namespace deepdraw
       contact.parse_parameters(prm,
                                input_directory,
                                process_parameters.blank_holder_force);
+      check_input();
 
       // Thickness profiles are square-cup tables: runs with tools only.
       if (contact.active())
@@ -375,7 +376,6 @@ namespace deepdraw
                            profile_travels.end());
       solver::IncrementControl control(increment_parameters, landing_loads);
 
-      Timer run_timer;
       // The times of an increment include its failed attempts (cut-backs):
       // they are reset only once it has converged.
       assembly_time             = 0.;
@@ -481,7 +481,7 @@ namespace deepdraw
       std::cout << "deepdraw: finished at load "
                 << format_load(control.current_load()) << " after "
                 << state.increment_number << " increments in "
-                << run_timer.wall_time() << " s; results in "
+                << wall_timer.wall_time() << " s; results in "
                 << output_parameters.output_directory << std::endl;
     }
 
