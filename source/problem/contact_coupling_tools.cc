@@ -2,6 +2,8 @@
 // parameters) and the tools they make (square-cup builder or tool files);
 // the pairs, their assembly and the holder equation are in
 // contact_coupling.cc.
+#include <algorithm>
+#include <cmath>
 #include <deal.II/base/utilities.h>
 #include <deepdraw/geometry/tool_file.h>
 #include <deepdraw/io/expression_error.h>
@@ -42,9 +44,23 @@ namespace deepdraw
           throw InputError(parameter + " = '" + text
                            + "': expected three numbers 'ax, ay, az'");
         }
-        if (!(direction.norm() > 0.))
-          throw InputError(parameter + " = '" + text
+        // Scaled by its largest component first: the norm of (1e300, 1e300,
+        // 0) overflows, and dividing by inf would give the zero vector.
+        // string_to_double reads "nan" and "inf".
+        double largest = 0.;
+        bool   finite  = true;
+        for (unsigned int d = 0; d < 3; ++d)
+        {
+          finite  = finite && std::isfinite(direction[d]);
+          largest = std::max(largest, std::abs(direction[d]));
+        }
+        if (!finite)
+          throw InputError(parameter + " = '" + io::one_line(text)
+                           + "': expected three finite numbers");
+        if (!(largest > 0.))
+          throw InputError(parameter + " = '" + io::one_line(text)
                            + "': the direction must not be zero");
+        direction /= largest;
         return direction / direction.norm();
       }
 
