@@ -120,6 +120,15 @@ namespace deepdraw
 
 
     void
+    CsvFile::close_silently()
+    {
+      if (descriptor >= 0)
+        ::close(descriptor);
+      descriptor = -1;
+    }
+
+
+    void
     write_csv_file_atomically(const std::string                      &filename,
                               const std::vector<std::string>         &columns,
                               const std::vector<std::vector<double>> &rows)

@@ -81,8 +81,35 @@ namespace deepdraw
     void
     FormingProblem::open_output_files()
     {
+      // A failure here is an input error (exit code 2, D11), after which
+      // nothing may be left behind: a directory made here is removed again.
       const std::string &directory = output_parameters.output_directory;
+      const bool         existed   = std::filesystem::exists(directory);
       std::filesystem::create_directories(directory);
+      try
+      {
+        open_output_tables();
+      }
+      catch (...)
+      {
+        statistics_file.close_silently();
+        newton_file.close_silently();
+        reactions_file.close_silently();
+        tools_file.close_silently();
+        if (!existed)
+        {
+          std::error_code ignored;
+          std::filesystem::remove_all(directory, ignored);
+        }
+        throw;
+      }
+    }
+
+
+    void
+    FormingProblem::open_output_tables()
+    {
+      const std::string &directory = output_parameters.output_directory;
       pvd = std::make_unique<io::PvdRecord>(directory + "/solution.pvd");
       statistics_file.open(directory + "/statistics.csv",
                            {"increment",

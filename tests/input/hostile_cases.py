@@ -380,30 +380,38 @@ def run_time_cases(source):
         return None
 
     def umount(context):
+        # What the run left on the tmpfs is kept on the real disk, in the
+        # same place, for the checks.
         full = context["directory"] / "full"
+        copy = context["directory"] / "full_copy"
         if os.path.ismount(full):
-            # The case's files are kept on the real disk for the checks.
-            subprocess.run(["cp", "-r", str(full / "out"),
-                            str(context["directory"] / "out_copy")])
+            subprocess.run(["cp", "-a", str(full), str(copy)])
             subprocess.run(["umount", str(full)])
-            if (context["directory"] / "out_copy").exists():
-                os.rmdir(full)
-                os.rename(context["directory"] / "out_copy", full)
+            os.rmdir(full)
+            os.rename(copy, full)
 
     return [
         dict(name="disk_full_while_writing_a_vtu", files=bar(),
              setup=lambda c: mount(c, "48k"), cleanup=umount,
              args=["case.prm", "--output-directory", "full/out"],
-             output="full", exit=3,
+             output="full/out", exit=3,
              messages=["the run stopped: no space left on device while "
                        "writing full/out/solution-"]),
         dict(name="disk_full_while_writing_a_csv_row",
              files=bar(sub("Output", "Write VTU", "false")),
              setup=lambda c: mount(c, "12k"), cleanup=umount,
              args=["case.prm", "--output-directory", "full/out"],
-             output="full", exit=3,
+             output="full/out", exit=3,
              messages=["the run stopped: no space left on device while "
                        "writing full/out/", ".csv"]),
+        dict(name="disk_full_before_the_first_increment",
+             files=bar(sub("Output", "Write VTU", "false")),
+             setup=lambda c: mount(c, "8k"), cleanup=umount,
+             args=["case.prm", "--output-directory", "full/out"],
+             output="full/out", exit=2,
+             messages=["Output/Output directory: cannot write results to "
+                       "'full/out': no space left on device while writing "
+                       "full/out/"]),
         dict(name="boundary_condition_without_value_between_check_loads",
              files=bar(sub("Boundary conditions", "Prescribed displacements",
                            "zmin: uz = 0; xmax: ux = sqrt(abs(t-0.55)-0.01)")),

@@ -39,6 +39,9 @@ namespace deepdraw
       // a full disk only there). The destructor closes silently.
       void
       close();
+      // Closes without reporting anything (after another error).
+      void
+      close_silently();
 
     private:
       void

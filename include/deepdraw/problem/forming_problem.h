@@ -205,6 +205,8 @@ namespace deepdraw
       void
       open_output_files();
       void
+      open_output_tables();
+      void
       write_vtu(double load);
       void
       write_increment_tables(double load);
