@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <deepdraw/geometry/tool_file.h>
@@ -100,10 +101,14 @@ namespace deepdraw::geometry
       }
     };
 
-    // Why a patch cannot be used, or "" (doc/tool_files.md, "Errors"):
-    // its control points span no extent, or x_u x x_v vanishes inside it,
-    // where it has no normal (collapsed edges are allowed; only interior
-    // points are tested, on a 5 x 5 grid).
+    // Why a patch cannot be used, or "" (doc/tool_files.md, "Errors"): its
+    // control points span no extent; or, on an (N + 1) x (N + 1) grid of
+    // (u, v) with N = 2 max(p, q) + 6, x_u x x_v vanishes at an interior
+    // point (no normal there), or turns by more than 90 degrees between
+    // neighbouring points (the patch folds over: the normal flips across a
+    // line where it is undefined, and a projection landing there gives NaN;
+    // found by fuzz/tool_file_fuzzer.cc). Collapsed edges (x_u x x_v = 0 on
+    // an edge, the pole of a sphere) are allowed.
     std::string
     degenerate_patch(const BezierPatch &patch)
     {
@@ -114,20 +119,42 @@ namespace deepdraw::geometry
           || !(extent > min_extent))
         return "all its control points are equal (their extent is below 1e-9 "
                "mm or 1e-9 of their coordinates)";
-      for (unsigned int j = 0; j < 5; ++j)
-        for (unsigned int i = 0; i < 5; ++i)
+
+      const unsigned int n
+        = 2 * std::max(patch.degree_u(), patch.degree_v()) + 6;
+      const double                      tiny = 1e-10 * extent * extent;
+      std::vector<dealii::Tensor<1, 3>> normal((n + 1) * (n + 1));
+      const auto at = [&](const unsigned int i, const unsigned int j)
+      {
+        std::ostringstream text;
+        text << "(u, v) = (" << double(i) / n << ", " << double(j) / n << ")";
+        return text.str();
+      };
+      for (unsigned int j = 0; j <= n; ++j)
+        for (unsigned int i = 0; i <= n; ++i)
         {
-          const double       u = 0.1 + 0.2 * i, v = 0.1 + 0.2 * j;
-          const SurfacePoint x = patch.derivatives(u, v);
-          const double area    = dealii::cross_product_3d(x.x_u, x.x_v).norm();
-          if (!(area > 1e-10 * extent * extent))
+          const SurfacePoint x
+            = patch.derivatives(double(i) / n, double(j) / n);
+          dealii::Tensor<1, 3> c = dealii::cross_product_3d(x.x_u, x.x_v);
+          const bool           interior = i > 0 && i < n && j > 0 && j < n;
+          if (!(c.norm() > tiny))
           {
-            std::ostringstream where;
-            where << "x_u x x_v = 0 at (u, v) = (" << u << ", " << v
-                  << "), so it has no normal there (its control points lie "
-                     "on one line, or the net folds onto itself)";
-            return where.str();
+            if (interior || !std::isfinite(c.norm()))
+              return "x_u x x_v = 0 at " + at(i, j)
+                     + ", so it has no normal there (its control points lie "
+                       "on one line, or the net folds onto itself)";
+            c = 0; // a collapsed edge
           }
+          else
+            c /= c.norm();
+          normal[i + (n + 1) * j] = c;
+          // 0 on a collapsed edge: not compared.
+          const bool flips_u = i > 0 && c * normal[i - 1 + (n + 1) * j] < 0.;
+          const bool flips_v = j > 0 && c * normal[i + (n + 1) * (j - 1)] < 0.;
+          if (flips_u || flips_v)
+            return "its normal x_u x x_v flips between " + at(i, j) + " and "
+                   + (flips_u ? at(i - 1, j) : at(i, j - 1))
+                   + ": the patch folds over onto itself";
         }
       return "";
     }

@@ -9,8 +9,12 @@
 // cannot escape the test.
 #include "../test_utilities.h"
 
+// As deal.II does: boost's JSON parser includes boost/bind.hpp, which asks
+// for this (a #pragma message otherwise).
+#define BOOST_BIND_GLOBAL_PLACEHOLDERS
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
+#undef BOOST_BIND_GLOBAL_PLACEHOLDERS
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deepdraw/problem/command_line.h>
