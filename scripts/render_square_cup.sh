@@ -21,7 +21,10 @@ fi
 command=("$pvpython" --force-offscreen-rendering "$script" "$@")
 if [ -z "${DISPLAY:-}" ]; then
   if command -v xvfb-run > /dev/null; then
-    command=(xvfb-run -a -s "-screen 0 1920x1200x24" "${command[@]}")
+    # -noreset: Xvfb resets when its last client disconnects, and a window
+    # ParaView opens during that reset fails ("bad X server connection",
+    # about every second run without it).
+    command=(xvfb-run -a -s "-screen 0 1920x1200x24 -noreset" "${command[@]}")
   else
     echo "render: no DISPLAY and no xvfb-run; trying without (install xvfb if pvpython aborts on the X connection)" >&2
   fi

@@ -4,7 +4,10 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages=(libdeal.ii-dev libopenblas0-serial cmake g++ make numdiff ccache python3 gnuplot-nox)
+# python3-paraview, python3-numpy, xvfb and xauth (which xvfb-run needs; only
+# recommended by xvfb) for the paraview test (tests/paraview/).
+packages=(libdeal.ii-dev libopenblas0-serial cmake g++ make numdiff ccache python3 gnuplot-nox
+          python3-paraview python3-numpy xvfb xauth)
 missing=()
 for package in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" \

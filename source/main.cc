@@ -1,9 +1,15 @@
 // deepdraw: implicit simulation of sheet-metal deep drawing.
 //   deepdraw FILE.prm [--output-directory DIR] [--resume] [--quiet]
+//   deepdraw --check FILE.prm
 //   deepdraw FILE.prm --study "Subsection/Parameter = v1, v2, ..." [...]
+//   deepdraw --write-square-cup-tools DIR [FILE.prm]
 //   deepdraw --help
 //   deepdraw --print-parameters
-//   deepdraw --write-square-cup-tools DIR [FILE.prm]
+// A run is problem::run_command_line (command_line.h); a study is
+// app::run_study (study.h), which runs this executable once per value; exit
+// codes in doc/user_guide.md §1 and §5.
+#include <algorithm>
+#include <csignal>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
@@ -11,80 +17,39 @@
 #include <deepdraw/geometry/cad_tool_writer.h>
 #include <deepdraw/geometry/square_cup_tools.h>
 #include <deepdraw/io/input_error.h>
+#include <deepdraw/io/parameter_file.h>
+#include <deepdraw/io/printable_text.h>
+#include <deepdraw/problem/command_line.h>
 #include <deepdraw/problem/forming_problem.h>
-#include <deepdraw/problem/stop_request.h>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 #include <string>
 #include <vector>
 
 namespace
 {
-  const char *usage
-    = "usage: deepdraw FILE.prm [--output-directory DIR] [--resume] "
-      "[--quiet]\n"
-      "       deepdraw FILE.prm [--output-directory DIR]\n"
-      "           --study \"Subsection/Parameter = v1, v2, ...\" ...\n"
-      "                                     refinement study: one run per\n"
-      "                                     value (options of the same length\n"
-      "                                     vary together); study.csv and\n"
-      "                                     study.png in the output directory\n"
-      "       deepdraw --print-parameters   print all parameters, documented,\n"
-      "                                     with their default values\n"
-      "       deepdraw --write-square-cup-tools DIR [FILE.prm]\n"
-      "                                     write the square-cup punch, die "
-      "and\n"
-      "                                     blank holder (subsection Tools "
-      "and\n"
-      "                                     Geometry/Thickness of FILE.prm, "
-      "or\n"
-      "                                     the defaults) as STEP and IGES "
-      "files\n"
-      "       deepdraw --help               print this text\n"
-      "\n"
-      "Runs the forming simulation described by FILE.prm and writes the "
-      "results\n"
-      "(solution.pvd + VTU for ParaView, CSV tables) to the output directory.\n"
-      "  --resume   continue from the checkpoint in the output directory\n"
-      "  --quiet    print only the summary, not a line per increment\n"
-      "SIGINT or SIGTERM stop after the current increment with a checkpoint.\n"
-      "Exit codes: 0 done, 1 bad command line, 2 bad input, 3 the run could "
-      "not\n"
-      "be completed (results of the converged increments are kept).\n";
-
-  // deal.II's exception text without its source-location preamble.
-  std::string
-  deal_ii_message(const dealii::ExceptionBase &exception)
-  {
-    std::ostringstream text;
-    exception.print_info(text);
-    std::string message = text.str();
-    while (!message.empty()
-           && (message.back() == '\n' || message.back() == ' '))
-      message.pop_back();
-    const auto start = message.find_first_not_of(" \n");
-    return start == std::string::npos ? message : message.substr(start);
-  }
+  using namespace deepdraw;
 
   // --write-square-cup-tools DIR [FILE.prm]: the built-in tools as STEP and
   // IGES files (doc/tool_files.md, CAD tools), to check the CAD reader
   // against the exact builder or to start a CAD model from.
   int
-  write_square_cup_tools(const std::string &directory,
-                         const std::string &prm_file)
+  write_square_cup_tools(const std::vector<std::string> &arguments)
   {
-    using namespace deepdraw;
+    if (arguments.size() < 2 || arguments.size() > 3 || arguments[1].empty()
+        || arguments[1][0] == '-')
+    {
+      std::cerr << "deepdraw: usage: deepdraw --write-square-cup-tools DIR "
+                   "[FILE.prm]\n";
+      return 1;
+    }
+    const std::string &directory = arguments[1];
+    const std::string  prm_file  = arguments.size() == 3 ? arguments[2] : "";
     try
     {
       dealii::ParameterHandler prm;
       problem::FormingProblem::declare_parameters(prm);
       if (!prm_file.empty())
-      {
-        if (!std::ifstream(prm_file))
-          throw InputError("cannot open the parameter file '" + prm_file + "'");
-        prm.parse_input(prm_file);
-      }
+        io::read_parameter_file(prm, prm_file);
       geometry::SquareCupToolParameters tools;
       tools.parse_parameters(prm);
       prm.enter_subsection("Geometry");
@@ -97,23 +62,54 @@ namespace
     }
     catch (const InputError &error)
     {
-      std::cerr << "deepdraw: error in the input: " << error.what()
-                << std::endl;
+      std::cerr << "deepdraw: error in the input: "
+                << io::one_line(error.what()) << std::endl;
       return 2;
     }
     catch (const dealii::ExceptionBase &error)
     {
       std::cerr << "deepdraw: error in " << prm_file << ": "
-                << deal_ii_message(error) << std::endl;
+                << io::deal_ii_message(error) << std::endl;
       return 2;
     }
     catch (const std::exception &error)
     {
       std::cerr << "deepdraw: cannot write the tools to " << directory << ": "
-                << error.what() << std::endl;
+                << io::one_line(error.what()) << std::endl;
       return 2;
     }
     return 0;
+  }
+
+  // FILE.prm [--output-directory DIR] --study "..." [--study "..."]
+  int
+  run_study(const std::vector<std::string> &arguments)
+  {
+    std::string              prm_file, output_directory;
+    std::vector<std::string> study_options;
+    for (std::size_t i = 0; i < arguments.size(); ++i)
+    {
+      const std::string &argument = arguments[i];
+      if (argument == "--study" && i + 1 < arguments.size())
+        study_options.push_back(arguments[++i]);
+      else if (argument == "--output-directory" && i + 1 < arguments.size()
+               && !arguments[i + 1].empty())
+        output_directory = arguments[++i];
+      else if (!argument.empty() && argument[0] != '-' && prm_file.empty())
+        prm_file = argument;
+      else
+      {
+        std::cerr << "deepdraw: --study: unknown or incomplete argument '"
+                  << io::one_line(argument) << "'\n";
+        return 1;
+      }
+    }
+    if (prm_file.empty())
+    {
+      std::cerr << "deepdraw: --study needs a parameter file\n";
+      return 1;
+    }
+    return app::run_study(prm_file, output_directory, study_options);
   }
 } // namespace
 
@@ -121,107 +117,17 @@ namespace
 int
 main(int argc, char *argv[])
 {
-  using namespace deepdraw;
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   dealii::deal_II_exceptions::disable_abort_on_exception();
-
-  std::string              prm_file, output_directory;
-  std::vector<std::string> study_options;
-  problem::RunOptions      options;
-  for (int i = 1; i < argc; ++i)
-  {
-    const std::string argument = argv[i];
-    if (argument == "--help" || argument == "-h")
-    {
-      std::cout << usage;
-      return 0;
-    }
-    else if (argument == "--print-parameters")
-    {
-      dealii::ParameterHandler prm;
-      problem::FormingProblem::declare_parameters(prm);
-      prm.print_parameters(std::cout, dealii::ParameterHandler::PRM);
-      return 0;
-    }
-    else if (argument == "--write-square-cup-tools" && i + 1 < argc
-             && (i + 2 == argc || (i + 3 == argc && argv[i + 2][0] != '-')))
-      return write_square_cup_tools(argv[i + 1],
-                                    i + 2 < argc ? argv[i + 2] : "");
-    else if (argument == "--output-directory" && i + 1 < argc)
-      output_directory = argv[++i];
-    else if (argument == "--resume")
-      options.resume = true;
-    else if (argument == "--quiet")
-      options.quiet = true;
-    else if (argument == "--study" && i + 1 < argc)
-      study_options.push_back(argv[++i]);
-    else if (!argument.empty() && argument[0] != '-' && prm_file.empty())
-      prm_file = argument;
-    else
-    {
-      std::cerr << "deepdraw: unknown argument '" << argument << "'\n" << usage;
-      return 1;
-    }
-  }
-  if (prm_file.empty())
-  {
-    std::cerr << usage;
-    return 1;
-  }
-  if (!study_options.empty())
-    return app::run_study(prm_file, output_directory, study_options);
-
-  std::unique_ptr<problem::FormingProblem> forming_problem;
-  try
-  {
-    if (!std::ifstream(prm_file))
-      throw InputError("cannot open the parameter file '" + prm_file + "'");
-    dealii::ParameterHandler prm;
-    problem::FormingProblem::declare_parameters(prm);
-    prm.parse_input(prm_file);
-    if (!output_directory.empty())
-    {
-      prm.enter_subsection("Output");
-      prm.set("Output directory", output_directory);
-      prm.leave_subsection();
-    }
-    const auto        slash = prm_file.find_last_of('/');
-    const std::string input_directory
-      = slash == std::string::npos ? "." : prm_file.substr(0, slash);
-    forming_problem
-      = std::make_unique<problem::FormingProblem>(prm, input_directory);
-  }
-  catch (const InputError &error)
-  {
-    std::cerr << "deepdraw: error in the input: " << error.what() << std::endl;
-    return 2;
-  }
-  catch (const dealii::ExceptionBase &error)
-  {
-    std::cerr << "deepdraw: error in " << prm_file << ": "
-              << deal_ii_message(error) << std::endl;
-    return 2;
-  }
-
-  problem::install_stop_handlers();
-  try
-  {
-    forming_problem->run(options);
-  }
-  catch (const InputError &error)
-  {
-    std::cerr << "deepdraw: error in the input: " << error.what() << std::endl;
-    return 2;
-  }
-  catch (const problem::RunFailure &failure)
-  {
-    std::cerr << "deepdraw: the run stopped: " << failure.what() << std::endl;
-    return 3;
-  }
-  catch (const std::exception &error)
-  {
-    std::cerr << "deepdraw: the run stopped: " << error.what() << std::endl;
-    return 3;
-  }
-  return 0;
+  // With a file size limit (ulimit -f) a write beyond it raises SIGXFSZ,
+  // which kills the process; ignored, the write fails with EFBIG and is
+  // reported like a full disk (exit code 3, D51).
+  std::signal(SIGXFSZ, SIG_IGN);
+  const std::vector<std::string> arguments(argv + 1, argv + argc);
+  if (!arguments.empty() && arguments[0] == "--write-square-cup-tools")
+    return write_square_cup_tools(arguments);
+  if (std::find(arguments.begin(), arguments.end(), "--study")
+      != arguments.end())
+    return run_study(arguments);
+  return deepdraw::problem::run_command_line(arguments);
 }

@@ -15,10 +15,12 @@ namespace deepdraw
       get_checked(dealii::ParameterHandler &prm,
                   const std::string        &entry,
                   const bool                allow_zero,
+                  const double              maximum,
                   const std::string        &allowed)
       {
         const double value = prm.get_double(entry);
-        if (!std::isfinite(value) || value < 0. || (!allow_zero && value == 0.))
+        if (!std::isfinite(value) || value < 0. || (!allow_zero && value == 0.)
+            || value > maximum)
           throw InputError("Contact/" + entry + " = " + prm.get(entry)
                            + " is not allowed: " + allowed + ".");
         return value;
@@ -33,21 +35,21 @@ namespace deepdraw
                         "0.162",
                         dealii::Patterns::Double(),
                         "Coulomb friction coefficient between the sheet and "
-                        "all tools; a number >= 0 (0: frictionless).");
+                        "all tools; 0 to 10 (0: frictionless).");
       prm.declare_entry(
         "Augmentation parameter",
         "0",
         dealii::Patterns::Double(),
-        "Augmentation parameter r of the Alart-Curnier law, in N/mm; a "
-        "number >= 0. 0 selects the automatic value, one for all contact "
+        "Augmentation parameter r of the Alart-Curnier law, in N/mm; 0 to "
+        "1e15. 0 selects the automatic value, one for all contact "
         "pairs: r = (Augmentation scaling) x E x h, h = sqrt(dx dy) the "
         "in-plane size of the blank's elements. The converged solution does "
         "not depend on r, only the Newton convergence does.");
       prm.declare_entry("Augmentation scaling",
                         "1",
                         dealii::Patterns::Double(),
-                        "Factor on the automatic augmentation parameter; a "
-                        "number > 0. E x (element size) is the in-plane "
+                        "Factor on the automatic augmentation parameter; "
+                        "0 < value <= 1e6. E x (element size) is the in-plane "
                         "stiffness of a node; a thin sheet pressed by a tool "
                         "resists by bending, about E t^3 / h^2, i.e. 0.01-0.02 "
                         "for the square cup (t = 0.81, h = 3 mm), where 0.01 "
@@ -66,15 +68,25 @@ namespace deepdraw
     void
     ContactParameters::parse_parameters(dealii::ParameterHandler &prm)
     {
-      friction_coefficient
-        = get_checked(prm, "Friction coefficient", true, "a number >= 0");
-      augmentation_parameter = get_checked(prm,
-                                           "Augmentation parameter",
-                                           true,
-                                           "a number >= 0 (0: automatic)");
-      augmentation_scaling
-        = get_checked(prm, "Augmentation scaling", false, "a number > 0");
-      const std::string l = prm.get("Linearisation");
+      // Upper bounds (D50): a friction coefficient of 10 is far beyond any
+      // tool and sheet; the augmentation only scales the contact rows.
+      friction_coefficient = get_checked(prm,
+                                         "Friction coefficient",
+                                         true,
+                                         10.,
+                                         "a number >= 0 and <= 10");
+      augmentation_parameter
+        = get_checked(prm,
+                      "Augmentation parameter",
+                      true,
+                      1e15,
+                      "a number >= 0 and <= 1e15 N/mm (0: automatic)");
+      augmentation_scaling = get_checked(prm,
+                                         "Augmentation scaling",
+                                         false,
+                                         1e6,
+                                         "a number > 0 and <= 1e6");
+      const std::string l  = prm.get("Linearisation");
       if (l == "full")
         linearisation = Linearisation::full;
       else if (l == "frozen normal")

@@ -263,6 +263,8 @@ namespace deepdraw::geometry
   {
     using dealii::Patterns::Double;
     const SquareCupToolParameters defaults;
+    // Every dimension at most 10 m (D50).
+    constexpr double max_dimension = 1e4;
     prm.enter_subsection("Tools");
     {
       prm.declare_entry(
@@ -275,23 +277,23 @@ namespace deepdraw::geometry
       {
         prm.declare_entry("Half width",
                           value(defaults.punch_half_width),
-                          Double(0.),
+                          Double(0., max_dimension),
                           "Half of the punch width in plan view (mm).");
         prm.declare_entry("Plan corner radius",
                           value(defaults.punch_corner_radius),
-                          Double(0.),
+                          Double(0., max_dimension),
                           "Radius of the punch corners in plan view (mm).");
         prm.declare_entry("Profile radius",
                           value(defaults.punch_profile_radius),
-                          Double(0.),
+                          Double(0., max_dimension),
                           "Nose radius between punch face and wall (mm).");
         prm.declare_entry("Height",
                           value(defaults.punch_height),
-                          Double(0.),
+                          Double(0., max_dimension),
                           "Height of the punch walls above its face (mm).");
         prm.declare_entry("Initial gap",
                           value(defaults.punch_initial_gap),
-                          Double(0.),
+                          Double(0., max_dimension),
                           "Distance of the punch face above the sheet's top "
                           "face at the start (mm).");
       }
@@ -300,25 +302,25 @@ namespace deepdraw::geometry
       {
         prm.declare_entry("Opening half width",
                           value(defaults.die_opening_half_width),
-                          Double(0.),
+                          Double(0., max_dimension),
                           "Half of the die opening in plan view (mm).");
         prm.declare_entry("Plan corner radius",
                           value(defaults.die_corner_radius),
-                          Double(0.),
+                          Double(0., max_dimension),
                           "Radius of the opening's corners in plan view (mm).");
         prm.declare_entry("Shoulder radius",
                           value(defaults.die_shoulder_radius),
-                          Double(0.),
+                          Double(0., max_dimension),
                           "Radius between die face and die wall (mm).");
         prm.declare_entry(
           "Depth",
           value(defaults.die_depth),
-          Double(0.),
+          Double(0., max_dimension),
           "Depth of the die wall's lower edge below the die face (mm).");
         prm.declare_entry(
           "Outer half width",
           value(defaults.die_outer_half_width),
-          Double(0.),
+          Double(0., max_dimension),
           "Half width of the die face's square outer edge (mm).");
       }
       prm.leave_subsection();
@@ -327,12 +329,12 @@ namespace deepdraw::geometry
         prm.declare_entry(
           "Outer half width",
           value(defaults.blank_holder_outer_half_width),
-          Double(0.),
+          Double(0., max_dimension),
           "Half width of the blank holder's square outer edge (mm); its inner "
           "contour is the die opening + 2 x shoulder radius.");
         prm.declare_entry("Initial gap",
                           value(defaults.blank_holder_initial_gap),
-                          Double(0.),
+                          Double(0., max_dimension),
                           "Distance of the blank holder above the sheet's top "
                           "face at the start (mm).");
       }

@@ -1,9 +1,12 @@
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <deepdraw/geometry/tool_file.h>
 #include <deepdraw/io/input_error.h>
+#include <deepdraw/io/output_file.h>
+#include <deepdraw/io/printable_text.h>
+#include <deepdraw/io/text_file.h>
 #include <filesystem>
-#include <fstream>
 #include <iomanip>
 #include <limits>
 #include <sstream>
@@ -12,6 +15,14 @@ namespace deepdraw::geometry
 {
   namespace
   {
+    // Limits of the numbers of a tool file (doc/tool_files.md, D50): every
+    // product the projection forms stays far from overflow and underflow.
+    constexpr double max_coordinate      = 1e6;
+    constexpr double min_weight          = 1e-6;
+    constexpr double max_weight          = 1e6;
+    constexpr double min_extent          = 1e-9;
+    constexpr double min_relative_extent = 1e-9;
+
     std::vector<std::string>
     split(const std::string &text)
     {
@@ -89,21 +100,80 @@ namespace deepdraw::geometry
         return std::size_t(p + 1) * (q + 1);
       }
     };
+
+    // Why a patch cannot be used, or "" (doc/tool_files.md, "Errors"): its
+    // control points span no extent; or, on an (N + 1) x (N + 1) grid of
+    // (u, v) with N = 2 max(p, q) + 6, x_u x x_v vanishes at an interior
+    // point (no normal there), or turns by more than 90 degrees between
+    // neighbouring points (the patch folds over: the normal flips across a
+    // line where it is undefined, and a projection landing there gives NaN;
+    // found by fuzz/tool_file_fuzzer.cc). Collapsed edges (x_u x x_v = 0 on
+    // an edge, the pole of a sphere) are allowed.
+    std::string
+    degenerate_patch(const BezierPatch &patch)
+    {
+      const dealii::BoundingBox<3> &box = patch.bounding_box();
+      const double extent = box.get_boundary_points().first.distance(
+        box.get_boundary_points().second);
+      if (!(extent > min_relative_extent * patch.length_scale())
+          || !(extent > min_extent))
+        return "all its control points are equal (their extent is below 1e-9 "
+               "mm or 1e-9 of their coordinates)";
+
+      const unsigned int n
+        = 2 * std::max(patch.degree_u(), patch.degree_v()) + 6;
+      const double                      tiny = 1e-10 * extent * extent;
+      std::vector<dealii::Tensor<1, 3>> normal((n + 1) * (n + 1));
+      const auto at = [&](const unsigned int i, const unsigned int j)
+      {
+        std::ostringstream text;
+        text << "(u, v) = (" << double(i) / n << ", " << double(j) / n << ")";
+        return text.str();
+      };
+      for (unsigned int j = 0; j <= n; ++j)
+        for (unsigned int i = 0; i <= n; ++i)
+        {
+          const SurfacePoint x
+            = patch.derivatives(double(i) / n, double(j) / n);
+          dealii::Tensor<1, 3> c = dealii::cross_product_3d(x.x_u, x.x_v);
+          const bool           interior = i > 0 && i < n && j > 0 && j < n;
+          if (!(c.norm() > tiny))
+          {
+            if (interior || !std::isfinite(c.norm()))
+              return "x_u x x_v = 0 at " + at(i, j)
+                     + ", so it has no normal there (its control points lie "
+                       "on one line, or the net folds onto itself)";
+            c = 0; // a collapsed edge
+          }
+          else
+            c /= c.norm();
+          normal[i + (n + 1) * j] = c;
+          // 0 on a collapsed edge: not compared.
+          const bool flips_u = i > 0 && c * normal[i - 1 + (n + 1) * j] < 0.;
+          const bool flips_v = j > 0 && c * normal[i + (n + 1) * (j - 1)] < 0.;
+          if (flips_u || flips_v)
+            return "its normal x_u x x_v flips between " + at(i, j) + " and "
+                   + (flips_u ? at(i - 1, j) : at(i, j - 1))
+                   + ": the patch folds over onto itself";
+        }
+      return "";
+    }
   } // namespace
 
 
   RigidTool
   read_tool_file(const std::string &filename)
   {
-    std::ifstream in(filename);
-    if (!in)
-      throw InputError(filename + ": cannot open the tool file");
+    // Regular, readable, at most 16 MB, text: a binary file is rejected
+    // before any of its bytes is echoed (io/text_file.h).
+    std::istringstream in(io::read_text_file(filename, "tool file"));
 
     unsigned int line_number = 0;
     const auto   fail        = [&](const std::string &message)
     {
-      throw InputError(filename + ":" + std::to_string(line_number) + ": "
-                       + message);
+      throw InputError(io::one_line(filename, 300) + ":"
+                       + std::to_string(line_number) + ": "
+                       + io::one_line(message, 500));
     };
 
     std::string                                               tool_name;
@@ -191,9 +261,12 @@ namespace deepdraw::geometry
                + std::to_string(block.p + 1) + " x "
                + std::to_string(block.q + 1) + "), found "
                + std::to_string(block.points.size()));
-        patches.emplace_back(
-          BezierPatch(block.p, block.q, block.points, block.weights),
-          block.edges);
+        BezierPatch       patch(block.p, block.q, block.points, block.weights);
+        const std::string degenerate = degenerate_patch(patch);
+        if (!degenerate.empty())
+          fail("the patch started at line " + std::to_string(block.first_line)
+               + " is degenerate: " + degenerate);
+        patches.emplace_back(std::move(patch), block.edges);
         in_patch = false;
       }
       else
@@ -208,9 +281,16 @@ namespace deepdraw::geometry
         for (unsigned int c = 0; c < 4; ++c)
           if (!std::isfinite(numbers[c]))
             fail("expected finite numbers, found \"" + line + "\"");
+        for (unsigned int c = 0; c < 3; ++c)
+          if (!(std::abs(numbers[c]) <= max_coordinate))
+            fail("coordinates must lie within +-1e6 mm, found \"" + line
+                 + "\"");
         if (!(numbers[3] > 0.))
           fail("weights must be positive, found " + tokens[3] + " in \"" + line
                + "\"");
+        if (!(numbers[3] >= min_weight && numbers[3] <= max_weight))
+          fail("weights must lie between 1e-6 and 1e6, found " + tokens[3]
+               + " in \"" + line + "\"");
         if (!block.has_degrees)
           fail("control point before the patch's 'degrees' line");
         if (block.points.size() == block.n_expected())
@@ -241,9 +321,9 @@ namespace deepdraw::geometry
   void
   write_tool_file(const RigidTool &tool, const std::string &filename)
   {
-    std::ofstream out(filename);
-    if (!out)
-      throw InputError(filename + ": cannot write the tool file");
+    // Built in memory and written through a temporary file and a rename:
+    // a failed write is an io::OutputError naming the file.
+    std::ostringstream out;
     out << std::setprecision(std::numeric_limits<double>::max_digits10);
     out << "# deepdraw tool file (format: doc/tool_files.md)\n"
         << "# Each patch: 'degrees p q', then (p+1)(q+1) lines 'x y z weight' "
@@ -272,8 +352,7 @@ namespace deepdraw::geometry
         out << (tool.is_free_edge(k, e) ? " free" : " not-free");
       out << "\nend\n";
     }
-    if (!out)
-      throw InputError(filename + ": error while writing the tool file");
+    io::write_file_atomically(filename, out.str());
   }
 
 

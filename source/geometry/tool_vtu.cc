@@ -2,11 +2,28 @@
 #include <cmath>
 #include <deal.II/base/exceptions.h>
 #include <deepdraw/geometry/tool_vtu.h>
-#include <fstream>
-#include <vector>
+#include <deepdraw/io/output_error.h>
+#include <deepdraw/io/output_file.h>
+#include <sstream>
 
 namespace deepdraw::geometry
 {
+  namespace
+  {
+    // The tool name inside an XML comment: "--" and markup would end or
+    // break it, so that ParaView could not read the file.
+    std::string
+    comment_text(std::string name)
+    {
+      for (char &c : name)
+        if (c == '-' || c == '<' || c == '>' || c == '&'
+            || static_cast<unsigned char>(c) < 0x20)
+          c = '_';
+      return name;
+    }
+  } // namespace
+
+
   void
   write_vtu(const RigidTool   &tool,
             const std::string &filename,
@@ -14,10 +31,10 @@ namespace deepdraw::geometry
   {
     AssertThrow(subdivisions >= 1,
                 dealii::ExcMessage("write_vtu: subdivisions must be >= 1"));
-    std::ofstream out(filename);
-    AssertThrow(out,
-                dealii::ExcMessage("Cannot write the tool output file "
-                                   + filename));
+    // Built in memory, checked, then written through a temporary file and
+    // a rename (io::write_file_atomically): a failed write is an
+    // io::OutputError naming the file, and a partial file never stays.
+    std::ostringstream out;
     out.precision(10);
 
     const unsigned int n_side   = subdivisions + 1;
@@ -51,8 +68,8 @@ namespace deepdraw::geometry
     const unsigned int n_cells = triangles.size();
 
     out << "<?xml version=\"1.0\"?>\n"
-        << "<!-- tool '" << tool.name() << "', " << tool.n_patches()
-        << " Bezier patches -->\n"
+        << "<!-- tool '" << comment_text(tool.name()) << "', "
+        << tool.n_patches() << " Bezier patches -->\n"
         << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" "
            "byte_order=\"LittleEndian\">\n"
         << "<UnstructuredGrid>\n"
@@ -66,6 +83,11 @@ namespace deepdraw::geometry
         {
           const dealii::Point<3> x = tool.to_global(
             patch.value(i / double(subdivisions), j / double(subdivisions)));
+          for (unsigned int d = 0; d < 3; ++d)
+            if (!std::isfinite(x[d]))
+              throw io::OutputError("a non-finite point of tool '" + tool.name()
+                                    + "' in " + filename
+                                    + "; deepdraw writes no NaN or inf");
           out << x[0] << ' ' << x[1] << ' ' << x[2] << '\n';
         }
     out
@@ -104,6 +126,6 @@ namespace deepdraw::geometry
       out << k << '\n';
     out << "</DataArray>\n</CellData>\n</Piece>\n</UnstructuredGrid>\n</"
            "VTKFile>\n";
-    AssertThrow(out, dealii::ExcMessage("Error while writing " + filename));
+    io::write_file_atomically(filename, out.str());
   }
 } // namespace deepdraw::geometry

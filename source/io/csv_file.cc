@@ -1,8 +1,13 @@
-#include <cstdio>
+#include <cerrno>
+#include <cmath>
 #include <deepdraw/io/csv_file.h>
+#include <deepdraw/io/output_error.h>
+#include <fcntl.h>
+#include <fstream>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
+#include <unistd.h>
 
 namespace deepdraw
 {
@@ -18,7 +23,27 @@ namespace deepdraw
         row << std::setprecision(10);
         for (std::size_t c = 0; c < values.size(); ++c)
           row << (c ? "," : "") << values[c];
+        row << '\n';
         return row.str();
+      }
+
+      // A value that is not finite names its column instead of reaching
+      // the file (doc/user_guide.md §3: no NaN or inf is written).
+      void
+      check_row(const std::vector<double>      &values,
+                const std::vector<std::string> &columns,
+                const std::string              &filename)
+      {
+        for (std::size_t c = 0; c < values.size(); ++c)
+          if (!std::isfinite(values[c]))
+          {
+            std::ostringstream text;
+            text << "a non-finite value (" << values[c] << ") in column "
+                 << columns[c] << " of " << filename << " (row with "
+                 << columns[0] << " = " << values[0]
+                 << "); deepdraw writes no NaN or inf";
+            throw OutputError(text.str());
+          }
       }
     } // namespace
 
@@ -30,54 +55,92 @@ namespace deepdraw
     }
 
 
+    CsvFile::~CsvFile()
+    {
+      if (descriptor >= 0)
+        ::close(descriptor);
+    }
+
+
     void
     CsvFile::open(const std::string              &name,
-                  const std::vector<std::string> &columns,
+                  const std::vector<std::string> &column_names,
                   const bool                      append)
     {
-      filename  = name;
-      n_columns = columns.size();
+      if (descriptor >= 0)
+        ::close(descriptor);
+      filename = name;
+      columns  = column_names;
+      size     = 0;
       if (append)
       {
         std::ifstream existing(filename);
         std::string   header;
-        if (!std::getline(existing, header) || header != format_row(columns))
-          throw std::runtime_error(filename
-                                   + " does not have the columns of this run");
-        file.open(filename, std::ios::app);
+        if (!std::getline(existing, header)
+            || header + '\n' != format_row(columns))
+          throw OutputError(filename
+                            + " does not have the columns of this run");
+        descriptor = ::open(filename.c_str(), O_WRONLY);
+        if (descriptor < 0)
+          throw OutputError(describe_system_error(errno, "opening", filename));
+        size = ::lseek(descriptor, 0, SEEK_END);
+        return;
       }
-      else
-        file.open(filename);
-      if (!file)
-        throw std::runtime_error("cannot write " + filename);
-      if (!append)
-        file << format_row(columns) << std::endl;
+      descriptor = ::open(filename.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+      if (descriptor < 0)
+        throw OutputError(describe_system_error(errno, "creating", filename));
+      write_row(format_row(columns));
     }
 
 
     void
     CsvFile::add_row(const std::vector<double> &values)
     {
-      if (values.size() != n_columns)
+      if (values.size() != columns.size())
         throw std::logic_error("wrong number of values for " + filename);
-      file << format_row(values) << std::endl;
+      if (descriptor < 0)
+        throw std::logic_error("CsvFile::add_row before open: " + filename);
+      check_row(values, columns, filename);
+      write_row(format_row(values));
     }
 
 
     void
-    write_file_atomically(const std::string &filename,
-                          const std::string &content)
+    CsvFile::write_row(const std::string &row)
     {
-      const std::string temporary = filename + ".tmp";
+      if (!write_all(descriptor, row.data(), row.size()))
       {
-        std::ofstream out(temporary);
-        out << content;
-        if (!out)
-          throw std::runtime_error("cannot write " + temporary);
+        const int error_number = errno;
+        // Whatever part of the row reached the file is cut off again, so
+        // that the file ends with a whole row (a special file such as
+        // /dev/full cannot be truncated; it holds nothing anyway).
+        if (::ftruncate(descriptor, size) == 0)
+          ::lseek(descriptor, size, SEEK_SET);
+        throw OutputError(
+          describe_system_error(error_number, "writing", filename));
       }
-      if (std::rename(temporary.c_str(), filename.c_str()) != 0)
-        throw std::runtime_error("cannot rename " + temporary + " to "
-                                 + filename);
+      size += static_cast<long long>(row.size());
+    }
+
+
+    void
+    CsvFile::close()
+    {
+      if (descriptor < 0)
+        return;
+      const int result = ::close(descriptor);
+      descriptor       = -1;
+      if (result != 0)
+        throw OutputError(describe_system_error(errno, "closing", filename));
+    }
+
+
+    void
+    CsvFile::close_silently()
+    {
+      if (descriptor >= 0)
+        ::close(descriptor);
+      descriptor = -1;
     }
 
 
@@ -86,12 +149,13 @@ namespace deepdraw
                               const std::vector<std::string>         &columns,
                               const std::vector<std::vector<double>> &rows)
     {
-      std::string content = format_row(columns) + "\n";
+      std::string content = format_row(columns);
       for (const std::vector<double> &row : rows)
       {
         if (row.size() != columns.size())
           throw std::logic_error("wrong number of values for " + filename);
-        content += format_row(row) + "\n";
+        check_row(row, columns, filename);
+        content += format_row(row);
       }
       write_file_atomically(filename, content);
     }

@@ -1,4 +1,5 @@
-#include <deepdraw/io/csv_file.h>
+#include <deepdraw/io/output_error.h>
+#include <deepdraw/io/output_file.h>
 #include <deepdraw/io/pvd_record.h>
 #include <iomanip>
 #include <sstream>
@@ -26,6 +27,9 @@ namespace deepdraw
     PvdRecord::add_step(const double                    time,
                         const std::vector<std::string> &parts)
     {
+      check_finite_for_output(&time,
+                              &time + 1,
+                              "the time of a step of " + filename);
       for (unsigned int p = 0; p < parts.size(); ++p)
         entries.push_back({time, p, parts[p]});
 

@@ -50,10 +50,11 @@ namespace deepdraw
       const MaterialParameters d;
       const double             inf = Double::max_double_value;
 
-      prm.declare_entry("Young's modulus",
-                        to_string(d.youngs_modulus),
-                        Double(0., inf),
-                        "Young's modulus E of the sheet, in MPa (> 0).");
+      prm.declare_entry(
+        "Young's modulus",
+        to_string(d.youngs_modulus),
+        Double(0., inf),
+        "Young's modulus E of the sheet, in MPa (0 < E <= 1e7).");
       prm.declare_entry("Poisson's ratio",
                         to_string(d.poissons_ratio),
                         Double(-1., 0.5),
@@ -65,8 +66,8 @@ namespace deepdraw
                           to_string(normal_default[i]),
                           Double(0., inf),
                           std::string("Hill'48 coefficient ") + normal[i]
-                            + ", dimensionless (>= 0; F + G, G + H, F + H > "
-                              "0). Axes: 1 = rolling, 2 = transverse, 3 = "
+                            + ", dimensionless (0 to 100; F + G, G + H, F + "
+                              "H > 0). Axes: 1 = rolling, 2 = transverse, 3 = "
                               "normal. Von Mises: F = G = H = 0.5.");
       const char  *shear[3]         = {"L", "M", "N"};
       const char  *plane[3]         = {"23", "31", "12"};
@@ -77,17 +78,20 @@ namespace deepdraw
                           Double(0., inf),
                           std::string("Hill'48 shear coefficient ") + shear[i]
                             + " (plane " + plane[i]
-                            + "), dimensionless (> 0). Von Mises: 1.5.");
+                            + "), dimensionless (0 < value <= 100). Von "
+                              "Mises: 1.5.");
       prm.declare_entry("Swift coefficient",
                         to_string(d.swift_coefficient),
                         Double(0., inf),
                         "C of the Swift law Y = C (eps0 + epbar)^n, in MPa "
-                        "(> 0).");
+                        "(0 < C <= 1e15; a very large C keeps the sheet "
+                        "elastic).");
       prm.declare_entry("Swift prestrain",
                         to_string(d.swift_prestrain),
                         Double(0., inf),
-                        "eps0 of the Swift law, dimensionless (> 0, so that "
-                        "the initial yield stress C eps0^n is positive).");
+                        "eps0 of the Swift law, dimensionless (0 < eps0 <= "
+                        "10, so that the initial yield stress C eps0^n is "
+                        "positive).");
       prm.declare_entry("Swift exponent",
                         to_string(d.swift_exponent),
                         Double(0., 1.),
@@ -97,7 +101,7 @@ namespace deepdraw
                         to_string(d.prager_modulus),
                         Double(0., inf),
                         "k of the Prager kinematic hardening dX = k "
-                        "d(eps^p), in MPa (>= 0; 0 switches it off).");
+                        "d(eps^p), in MPa (0 to 1e7; 0 switches it off).");
       prm.declare_entry("Rolling direction angle",
                         to_string(d.rolling_direction_angle),
                         Double(-180., 180.),
@@ -134,17 +138,19 @@ namespace deepdraw
     MaterialParameters::validate() const
     {
       // Written as !(a < b) etc. where needed so that NaN is rejected too.
-      require(youngs_modulus > 0. && std::isfinite(youngs_modulus),
+      // Upper bounds (D50) far above any metal, so that no product of
+      // them overflows in the stress update.
+      require(youngs_modulus > 0. && youngs_modulus <= 1e7,
               "Young's modulus",
               youngs_modulus,
-              "E > 0 (MPa)");
+              "0 < E <= 1e7 (MPa)");
       require(poissons_ratio > -1. && poissons_ratio < 0.5,
               "Poisson's ratio",
               poissons_ratio,
               "-1 < nu < 0.5 (0.5 is incompressible, not supported)");
-      require(hill_F >= 0., "Hill F", hill_F, ">= 0");
-      require(hill_G >= 0., "Hill G", hill_G, ">= 0");
-      require(hill_H >= 0., "Hill H", hill_H, ">= 0");
+      require(hill_F >= 0. && hill_F <= 100., "Hill F", hill_F, "0 to 100");
+      require(hill_G >= 0. && hill_G <= 100., "Hill G", hill_G, "0 to 100");
+      require(hill_H >= 0. && hill_H <= 100., "Hill H", hill_H, "0 to 100");
       // Pairwise sums > 0 make M positive definite on deviators, so the
       // yield surface is bounded (doc/theory_material.md).
       require(hill_G + hill_H > 0.,
@@ -162,26 +168,27 @@ namespace deepdraw
               hill_F,
               "such that Material/Hill F + Material/Hill G > 0 (Hill G = "
                 + to_string(hill_G) + ")");
-      require(hill_L > 0., "Hill L", hill_L, "> 0");
-      require(hill_M > 0., "Hill M", hill_M, "> 0");
-      require(hill_N > 0., "Hill N", hill_N, "> 0");
-      require(swift_coefficient > 0. && std::isfinite(swift_coefficient),
+      require(hill_L > 0. && hill_L <= 100., "Hill L", hill_L, "0 < L <= 100");
+      require(hill_M > 0. && hill_M <= 100., "Hill M", hill_M, "0 < M <= 100");
+      require(hill_N > 0. && hill_N <= 100., "Hill N", hill_N, "0 < N <= 100");
+      // Tests keep a sheet elastic with C = 1e12.
+      require(swift_coefficient > 0. && swift_coefficient <= 1e15,
               "Swift coefficient",
               swift_coefficient,
-              "C > 0 (MPa)");
-      require(swift_prestrain > 0. && std::isfinite(swift_prestrain),
+              "0 < C <= 1e15 (MPa)");
+      require(swift_prestrain > 0. && swift_prestrain <= 10.,
               "Swift prestrain",
               swift_prestrain,
-              "eps0 > 0 (the initial yield stress C eps0^n must be finite "
-              "and positive)");
+              "0 < eps0 <= 10 (the initial yield stress C eps0^n must be "
+              "finite and positive)");
       require(swift_exponent >= 0. && swift_exponent < 1.,
               "Swift exponent",
               swift_exponent,
               "0 <= n < 1");
-      require(prager_modulus >= 0. && std::isfinite(prager_modulus),
+      require(prager_modulus >= 0. && prager_modulus <= 1e7,
               "Prager modulus",
               prager_modulus,
-              "k >= 0 (MPa)");
+              "0 <= k <= 1e7 (MPa)");
       require(rolling_direction_angle >= -180.
                 && rolling_direction_angle <= 180.,
               "Rolling direction angle",

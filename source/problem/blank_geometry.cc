@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
@@ -15,32 +16,40 @@ namespace deepdraw
     BlankGeometry::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Geometry");
+      // Upper bounds (D50): 10 m of blank, and a mesh whose memory is
+      // estimated before it is made (memory_estimate.h).
       prm.declare_entry("Length",
                         "75",
-                        Patterns::Double(0.),
-                        "Extent of the blank along x (rolling direction), mm. "
-                        "With a symmetry plane x = 0 this is half the blank.");
+                        Patterns::Double(0., max_extent),
+                        "Extent of the blank along x (rolling direction), mm "
+                        "(0 < Length <= 10000). With a symmetry plane x = 0 "
+                        "this is half the blank.");
       prm.declare_entry("Width",
                         "75",
-                        Patterns::Double(0.),
-                        "Extent of the blank along y, mm.");
+                        Patterns::Double(0., max_extent),
+                        "Extent of the blank along y, mm (0 < Width <= "
+                        "10000).");
       prm.declare_entry("Thickness",
                         "0.81",
-                        Patterns::Double(0.),
-                        "Initial sheet thickness (along z), mm.");
+                        Patterns::Double(0., max_extent),
+                        "Initial sheet thickness (along z), mm (0 < "
+                        "Thickness <= 10000).");
       prm.declare_entry("Elements along x",
                         "25",
-                        Patterns::Integer(1),
-                        "Number of elements along x.");
+                        Patterns::Integer(1, max_elements),
+                        "Number of elements along x (1 to 100000; the "
+                        "memory the mesh needs is checked against what is "
+                        "available).");
       prm.declare_entry("Elements along y",
                         "25",
-                        Patterns::Integer(1),
-                        "Number of elements along y.");
+                        Patterns::Integer(1, max_elements),
+                        "Number of elements along y (1 to 100000).");
       prm.declare_entry("Layers through thickness",
                         "2",
-                        Patterns::Integer(1),
+                        Patterns::Integer(1, max_elements),
                         "Number of element layers through the thickness "
-                        "(two or more recommended in bending).");
+                        "(1 to 100000; two or more recommended in "
+                        "bending).");
       prm.declare_entry("Symmetry planes",
                         "x, y",
                         Patterns::MultipleSelection("x|y"),
@@ -76,10 +85,34 @@ namespace deepdraw
       const std::pair<const char *, double> extents[]
         = {{"Length", length}, {"Width", width}, {"Thickness", thickness}};
       for (const auto &[name, value] : extents)
-        if (!(value > 0.) || !std::isfinite(value))
+        if (!(value > 0.) || !(value <= max_extent))
           throw InputError("Geometry/" + std::string(name)
-                           + " must be a positive length in mm, got "
-                           + std::to_string(value));
+                           + " must be a positive length in mm (0 < " + name
+                           + " <= 10000), got " + std::to_string(value));
+    }
+
+
+    double
+    BlankGeometry::largest_extent() const
+    {
+      return std::max({length, width, thickness});
+    }
+
+
+    double
+    BlankGeometry::diagonal() const
+    {
+      return std::sqrt(length * length + width * width + thickness * thickness);
+    }
+
+
+    double
+    BlankGeometry::n_cells() const
+    {
+      // As a double: the product of three counts up to 1e5 overflows an
+      // unsigned int.
+      return double(elements_along_x) * elements_along_y
+             * layers_through_thickness;
     }
 
 

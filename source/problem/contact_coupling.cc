@@ -8,8 +8,11 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deepdraw/io/input_error.h>
+#include <deepdraw/io/printable_text.h>
 #include <deepdraw/problem/contact_coupling.h>
 #include <fstream>
+#include <iomanip>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -19,24 +22,53 @@ namespace deepdraw
   {
     namespace
     {
-      Tensor<1, 3>
-      evaluate_translation(const FunctionParser<1> &function, const double load)
+      // A value that is not finite stops the run naming the parameter (exit
+      // code 3, doc/user_guide.md §5): cutting back cannot step around an
+      // expression that has no value at this load. The input check (D50)
+      // has evaluated it at 11 loads already.
+      void
+      require_finite(const double       value,
+                     const std::string &parameter,
+                     const std::string &expression,
+                     const double       load)
       {
-        auto &f = const_cast<FunctionParser<1> &>(function);
-        f.set_time(load);
-        Vector<double> values(3);
-        f.vector_value(Point<1>(), values);
-        return Tensor<1, 3>({values[0], values[1], values[2]});
+        if (!std::isfinite(value))
+        {
+          std::ostringstream text;
+          text << std::setprecision(6) << parameter << " = '"
+               << io::one_line(expression) << "' is not finite at t = " << load;
+          throw std::runtime_error(text.str());
+        }
       }
 
-      double
-      evaluate_scalar(const FunctionParser<1> &function, const double load)
+      Tensor<1, 3>
+      evaluate_translation(const ToolDefinition &tool, const double load)
       {
-        auto &f = const_cast<FunctionParser<1> &>(function);
-        f.set_time(load);
-        return f.value(Point<1>());
+        tool.translation->set_time(load);
+        Vector<double> values(3);
+        tool.translation->vector_value(Point<1>(), values);
+        for (unsigned int d = 0; d < 3; ++d)
+          require_finite(values[d],
+                         tool.parameter_prefix + "Translation",
+                         tool.translation_expression,
+                         load);
+        return Tensor<1, 3>({values[0], values[1], values[2]});
       }
     } // namespace
+
+
+    double
+    ContactCoupling::prescribed_force(const unsigned int k,
+                                      const double       load) const
+    {
+      definitions[k].force->set_time(load);
+      const double force = definitions[k].force->value(Point<1>());
+      require_finite(force,
+                     "Process/Blank holder force",
+                     holder_force_expression,
+                     load);
+      return force;
+    }
 
 
     unsigned int
@@ -121,9 +153,9 @@ namespace deepdraw
         else
         {
           translation_at_start[k]
-            = evaluate_translation(*definitions[k].translation, old_load);
+            = evaluate_translation(definitions[k], old_load);
           translation_at_end[k]
-            = evaluate_translation(*definitions[k].translation, new_load);
+            = evaluate_translation(definitions[k], new_load);
           tool_list[k].set_rigid_motion(unit_symmetric_tensor<3>(),
                                         translation_at_end[k]);
         }
@@ -275,8 +307,7 @@ namespace deepdraw
       for (unsigned int k = 0; k < definitions.size(); ++k)
         if (definitions[k].force_controlled)
         {
-          rhs[position_dof[k]]
-            += evaluate_scalar(*definitions[k].force, new_load);
+          rhs[position_dof[k]] += prescribed_force(k, new_load);
           if (active_pairs[k] == 0 && matrix != nullptr)
             matrix->add(position_dof[k], position_dof[k], force_regularisation);
         }
@@ -308,9 +339,8 @@ namespace deepdraw
       for (unsigned int k = 0; k < definitions.size(); ++k)
         if (definitions[k].force_controlled)
         {
-          const double force
-            = std::abs(evaluate_scalar(*definitions[k].force, load));
-          error = std::max(error,
+          const double force = std::abs(prescribed_force(k, load));
+          error              = std::max(error,
                            std::abs(rhs[position_dof[k]])
                              / (force > 0. ? force : zero_force_scale));
         }
@@ -423,7 +453,7 @@ namespace deepdraw
     ContactCoupling::prescribed_translation(const unsigned int k,
                                             const double       load) const
     {
-      return evaluate_translation(*definitions[k].translation, load);
+      return evaluate_translation(definitions[k], load);
     }
 
 

@@ -3,14 +3,20 @@
 // STEP / IGES files, doc/tool_files.md);
 // the pairs, their assembly and the holder equation are in
 // contact_coupling.cc.
+#include <algorithm>
+#include <cmath>
 #include <deal.II/base/utilities.h>
 #include <deepdraw/geometry/cad_tool_reader.h>
 #include <deepdraw/geometry/tool_file.h>
+#include <deepdraw/io/expression_error.h>
 #include <deepdraw/io/input_error.h>
+#include <deepdraw/io/printable_text.h>
 #include <deepdraw/problem/contact_coupling.h>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
+#include <sstream>
 
 namespace deepdraw
 {
@@ -42,9 +48,23 @@ namespace deepdraw
           throw InputError(parameter + " = '" + text
                            + "': expected three numbers 'ax, ay, az'");
         }
-        if (!(direction.norm() > 0.))
-          throw InputError(parameter + " = '" + text
+        // Scaled by its largest component first: the norm of (1e300, 1e300,
+        // 0) overflows, and dividing by inf would give the zero vector.
+        // string_to_double reads "nan" and "inf".
+        double largest = 0.;
+        bool   finite  = true;
+        for (unsigned int d = 0; d < 3; ++d)
+        {
+          finite  = finite && std::isfinite(direction[d]);
+          largest = std::max(largest, std::abs(direction[d]));
+        }
+        if (!finite)
+          throw InputError(parameter + " = '" + io::one_line(text)
+                           + "': expected three finite numbers");
+        if (!(largest > 0.))
+          throw InputError(parameter + " = '" + io::one_line(text)
                            + "': the direction must not be zero");
+        direction /= largest;
         return direction / direction.norm();
       }
 
@@ -54,24 +74,41 @@ namespace deepdraw
                              const std::string &parameter)
       {
         auto function = std::make_shared<FunctionParser<1>>(n_components);
-        try
-        {
-          function->initialize("s,t",
-                               text,
-                               std::map<std::string, double>(),
-                               /*time_dependent=*/true);
-          function->set_time(0.);
-          Vector<double> values(n_components);
-          function->vector_value(Point<1>(), values);
-        }
-        catch (...)
-        {
-          throw InputError(parameter + " = '" + text + "': expected "
-                           + std::to_string(n_components)
+        // muparser's own diagnostic lines become the reason of the message
+        // (io/expression_error.h).
+        const std::string error = io::expression_error(
+          [&]()
+          {
+            function->initialize("s,t",
+                                 text,
+                                 std::map<std::string, double>(),
+                                 /*time_dependent=*/true);
+            function->set_time(0.);
+            Vector<double> values(n_components);
+            function->vector_value(Point<1>(), values);
+          });
+        if (!error.empty())
+          throw InputError(parameter + " = '" + io::one_line(text)
+                           + "': expected " + std::to_string(n_components)
                            + " expression(s) of the load t separated by "
-                             "';'");
-        }
+                             "';' ("
+                           + error + ")");
         return function;
+      }
+
+      // Names become CSV column names (tools.csv) and file names
+      // (tool_<name>-NNNNN.vtu): no separators of either.
+      void
+      check_tool_name(const std::string &name, const std::string &parameter)
+      {
+        for (const char c : name)
+          if (c == ',' || c == '"' || c == '/' || c == '\\'
+              || static_cast<unsigned char>(c) < 0x20 || c == 0x7F)
+            throw InputError(parameter + " = '" + io::one_line(name)
+                             + "': a tool name must not contain commas, "
+                               "quotes, slashes, backslashes or control "
+                               "characters (it names CSV columns and "
+                               "files)");
       }
 
     } // namespace
@@ -84,9 +121,10 @@ namespace deepdraw
       contact::ContactParameters::declare_parameters(prm);
       prm.declare_entry("Search distance",
                         "2",
-                        Patterns::Double(0.),
+                        Patterns::Double(0., 1e4),
                         "Nodes farther than this from a tool (mm) are not "
-                        "projected onto it and count as open.");
+                        "projected onto it and count as open; > 0 and, with "
+                        "tools, at most the diagonal of the blank.");
       for (unsigned int slot = 0; slot < n_tool_slots; ++slot)
       {
         prm.enter_subsection(slot_name(slot));
@@ -94,7 +132,9 @@ namespace deepdraw
                           "",
                           Patterns::Anything(),
                           "Name of the tool; an empty name leaves the slot "
-                          "unused.");
+                          "unused. Names must differ and must not contain "
+                          "commas, quotes, slashes or backslashes (they name "
+                          "the columns of tools.csv and the tool VTU files).");
         prm.declare_entry("Geometry",
                           "file",
                           Patterns::Selection("file|cad|square cup punch|"
@@ -170,6 +210,10 @@ namespace deepdraw
       prm.enter_subsection("Contact");
       parameters.parse_parameters(prm);
       search_distance = prm.get_double("Search distance");
+      if (!(search_distance > 0.))
+        throw InputError("Contact/Search distance must be > 0 (mm), got "
+                         + prm.get("Search distance"));
+      holder_force_expression = blank_holder_force;
       definitions.clear();
       for (unsigned int slot = 0; slot < n_tool_slots; ++slot)
       {
@@ -179,10 +223,20 @@ namespace deepdraw
         tool.name = Utilities::trim(prm.get("Name"));
         if (!tool.name.empty())
         {
-          tool.geometry    = prm.get("Geometry");
-          tool.file        = Utilities::trim(prm.get("File"));
-          tool.length_unit = prm.get("Length unit");
-          tool.normals     = prm.get("Normals");
+          check_tool_name(tool.name, prefix + "Name");
+          // Two tools of one name would give two sets of CSV columns and
+          // VTU files of the same name.
+          for (const ToolDefinition &other : definitions)
+            if (other.name == tool.name)
+              throw InputError(prefix + "Name = '" + io::one_line(tool.name)
+                               + "': " + other.parameter_prefix
+                               + "Name has this name already; tool names "
+                                 "must differ");
+          tool.parameter_prefix = prefix;
+          tool.geometry         = prm.get("Geometry");
+          tool.file             = Utilities::trim(prm.get("File"));
+          tool.length_unit      = prm.get("Length unit");
+          tool.normals          = prm.get("Normals");
           if (tool.geometry == "file" || tool.geometry == "cad")
           {
             if (tool.file.empty())
@@ -190,20 +244,23 @@ namespace deepdraw
                                + "Geometry = " + tool.geometry);
             if (tool.file[0] != '/')
               tool.file = prm_directory + "/" + tool.file;
+            // The tool file itself is read and checked when the tools
+            // are made (geometry/tool_file.h), with its own messages.
             if (!std::ifstream(tool.file))
               throw InputError(prefix
                                + "File: cannot open the tool "
                                  "file '"
-                               + tool.file + "'");
+                               + io::one_line(tool.file) + "'");
           }
           tool.sheet_face       = prm.get("Sheet surface") == "top" ? 5 : 4;
           tool.force_controlled = prm.get("Control") == "force";
-          tool.translation      = parse_function_of_load(prm.get("Translation"),
+          tool.translation_expression = prm.get("Translation");
+          tool.translation = parse_function_of_load(tool.translation_expression,
                                                     3,
                                                     prefix + "Translation");
-          tool.axis             = parse_direction(prm.get("Force direction"),
+          tool.axis        = parse_direction(prm.get("Force direction"),
                                       prefix + "Force direction");
-          tool.force            = holder_force;
+          tool.force       = holder_force;
           definitions.push_back(tool);
         }
         prm.leave_subsection();
@@ -211,6 +268,62 @@ namespace deepdraw
       prm.leave_subsection();
       law = std::make_unique<contact::AlartCurnierLaw>(
         parameters.friction_coefficient);
+    }
+
+
+    void
+    ContactCoupling::check_values(const std::vector<double> &loads,
+                                  const double               blank_diagonal,
+                                  const double               length_bound) const
+    {
+      if (!active())
+        return;
+      if (!(search_distance <= blank_diagonal))
+      {
+        std::ostringstream text;
+        text << std::setprecision(6)
+             << "Contact/Search distance = " << search_distance
+             << " mm is larger than the blank: allowed is 0 < Search "
+                "distance <= "
+             << blank_diagonal << " mm (the diagonal of the blank)";
+        throw InputError(text.str());
+      }
+      for (unsigned int k = 0; k < definitions.size(); ++k)
+        for (const double load : loads)
+        {
+          std::ostringstream text;
+          text << std::setprecision(6);
+          if (definitions[k].force_controlled)
+          {
+            definitions[k].force->set_time(load);
+            const double force = definitions[k].force->value(Point<1>());
+            if (!(std::abs(force) <= max_force))
+            {
+              text << "Process/Blank holder force = '"
+                   << io::one_line(holder_force_expression) << "' gives "
+                   << force << " N at t = " << load
+                   << "; allowed are finite forces up to " << max_force << " N";
+              throw InputError(text.str());
+            }
+          }
+          else
+          {
+            Vector<double> u(3);
+            definitions[k].translation->set_time(load);
+            definitions[k].translation->vector_value(Point<1>(), u);
+            for (unsigned int d = 0; d < 3; ++d)
+              if (!(std::abs(u[d]) <= length_bound))
+              {
+                text << definitions[k].parameter_prefix << "Translation = '"
+                     << io::one_line(definitions[k].translation_expression)
+                     << "' gives u"
+                     << "xyz"[d] << " = " << u[d] << " mm at t = " << load
+                     << "; allowed are finite translations up to "
+                     << length_bound << " mm";
+                throw InputError(text.str());
+              }
+          }
+        }
     }
 
 

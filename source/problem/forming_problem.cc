@@ -72,6 +72,7 @@ namespace deepdraw
                                process_parameters.blank_holder_force);
       checkpoint_parameters.parse_parameters(prm);
       parameter_listing = flatten_parameters(prm);
+      check_input();
 
       // Thickness profiles are square-cup tables: runs with tools only.
       if (contact.active())

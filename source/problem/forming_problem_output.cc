@@ -5,10 +5,11 @@
 #include <deal.II/numerics/data_out.h>
 #include <deepdraw/fe/selective_reduced_quadrature.h>
 #include <deepdraw/geometry/tool_vtu.h>
+#include <deepdraw/io/output_error.h>
+#include <deepdraw/io/output_file.h>
 #include <deepdraw/problem/forming_problem.h>
 #include <deepdraw/problem/thickness_profiles.h>
 #include <filesystem>
-#include <fstream>
 #include <iomanip>
 #include <sstream>
 
@@ -80,8 +81,35 @@ namespace deepdraw
     void
     FormingProblem::open_output_files(const bool resume)
     {
+      // A failure here is an input error (exit code 2, D11), after which
+      // nothing may be left behind: a directory made here is removed again.
       const std::string &directory = output_parameters.output_directory;
+      const bool         existed   = std::filesystem::exists(directory);
       std::filesystem::create_directories(directory);
+      try
+      {
+        open_output_tables(resume);
+      }
+      catch (...)
+      {
+        statistics_file.close_silently();
+        newton_file.close_silently();
+        reactions_file.close_silently();
+        tools_file.close_silently();
+        if (!existed)
+        {
+          std::error_code ignored;
+          std::filesystem::remove_all(directory, ignored);
+        }
+        throw;
+      }
+    }
+
+
+    void
+    FormingProblem::open_output_tables(const bool resume)
+    {
+      const std::string &directory = output_parameters.output_directory;
       pvd = std::make_unique<io::PvdRecord>(directory + "/solution.pvd",
                                             resumed_pvd_steps);
       statistics_file.open(directory + "/statistics.csv",
@@ -171,8 +199,7 @@ namespace deepdraw
       std::vector<double> strain(column_thickness.size());
       for (unsigned int c = 0; c < strain.size(); ++c)
         strain[c] = std::log(column_thickness[c] / geometry.thickness);
-      std::ostringstream label;
-      label << std::setprecision(10) << travel;
+      const std::string label = io::OutputParameters::travel_label(travel);
       const std::pair<const char *, Profile> profiles[]
         = {{"OX",
             profile_along_x_axis(strain,
@@ -190,8 +217,8 @@ namespace deepdraw
         for (const auto &[s0, value] : profile)
           rows.push_back({s0, value});
         io::write_csv_file_atomically(output_parameters.output_directory
-                                        + "/thickness_" + name + "_"
-                                        + label.str() + "mm.csv",
+                                        + "/thickness_" + name + "_" + label
+                                        + "mm.csv",
                                       {"s0_mm", "thickness_strain"},
                                       rows);
       }
@@ -330,30 +357,70 @@ namespace deepdraw
       data_out.add_data_vector(plastic_strain,
                                "equivalent_plastic_strain",
                                DataOut<3>::type_cell_data);
-      data_out.build_patches();
-
       std::ostringstream name;
       name << "solution-" << std::setw(5) << std::setfill('0') << output_step
            << ".vtu";
       const std::string path
         = output_parameters.output_directory + "/" + name.str();
+
+      // No NaN or inf reaches a file (doc/user_guide.md §3, D51): every
+      // field and the vertices are checked before anything is written.
+      const auto check
+        = [&](const Vector<double> &values, const std::string &field)
       {
-        std::ofstream out(path + ".tmp");
-        data_out.write_vtu(out);
+        io::check_finite_for_output(values.begin(),
+                                    values.end(),
+                                    "the field " + field + " of " + path
+                                      + " (load " + std::to_string(load) + ")");
+      };
+      check(state.total_displacement, "displacement");
+      check(thickness_strain, "thickness_strain");
+      if (contact.active())
+      {
+        check(contact_status, "contact_status");
+        check(contact_gap, "contact_gap");
+        check(contact_pressure, "contact_pressure");
+        for (unsigned int d = 0; d < 3; ++d)
+          check(friction_stress[d], std::string("friction_stress_") + axes[d]);
       }
-      std::filesystem::rename(path + ".tmp", path);
-      std::vector<std::string> parts = {name.str()};
-      for (const geometry::RigidTool &tool : contact.tools())
+      for (unsigned int p = 0; p < 6; ++p)
       {
-        std::string tool_name = tool.name();
+        const std::string suffix
+          = std::string(axes[pairs[p][0]]) + axes[pairs[p][1]];
+        check(stress[p], "stress_" + suffix);
+        check(back_stress[p], "back_stress_" + suffix);
+      }
+      for (unsigned int d = 0; d < 3; ++d)
+        check(rolling_direction[d],
+              std::string("rolling_direction_") + axes[d]);
+      check(equivalent_stress, "equivalent_stress");
+      check(plastic_strain, "equivalent_plastic_strain");
+      for (const Point<3> &vertex : triangulation.get_vertices())
+        io::check_finite_for_output(&vertex[0],
+                                    &vertex[0] + 3,
+                                    "the vertices of " + path);
+
+      data_out.build_patches();
+      // Written in memory first: deal.II's writer reports a failed stream
+      // only as an exception with a stack trace, and a file written in
+      // place could be left half written.
+      std::ostringstream vtu;
+      data_out.write_vtu(vtu);
+      io::write_file_atomically(path, vtu.str());
+      std::vector<std::string> parts = {name.str()};
+      for (unsigned int k = 0; k < contact.tools().size(); ++k)
+      {
+        const geometry::RigidTool &tool = contact.tools()[k];
+        // The slot's name, unique among the tools (the name inside a tool
+        // file may be shared by two slots).
+        std::string tool_name = contact.tool_definitions()[k].name;
         std::replace(tool_name.begin(), tool_name.end(), ' ', '_');
         std::ostringstream tool_file;
         tool_file << "tool_" << tool_name << "-" << std::setw(5)
                   << std::setfill('0') << output_step << ".vtu";
         const std::string tool_path
           = output_parameters.output_directory + "/" + tool_file.str();
-        geometry::write_vtu(tool, tool_path + ".tmp", 8);
-        std::filesystem::rename(tool_path + ".tmp", tool_path);
+        geometry::write_vtu(tool, tool_path, 8);
         parts.push_back(tool_file.str());
       }
       pvd->add_step(load, parts);

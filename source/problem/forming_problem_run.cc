@@ -216,7 +216,7 @@ namespace deepdraw
       std::cout << "deepdraw: finished at load "
                 << format_load(control.current_load()) << " after "
                 << state.increment_number << " increments in "
-                << format_seconds(run_timer.wall_time()) << "; results in "
+                << format_seconds(wall_timer.wall_time()) << "; results in "
                 << output_parameters.output_directory << std::endl;
     }
 

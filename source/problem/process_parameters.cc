@@ -10,9 +10,11 @@ namespace deepdraw
       prm.enter_subsection("Process");
       prm.declare_entry("Final load",
                         "1",
-                        Patterns::Double(0.),
+                        Patterns::Double(0., 1e6),
                         "End of the run: final value of the load parameter "
-                        "t, which starts at 0 (in the unit the prm gives t; "
+                        "t, which starts at 0 (0 to 1e6; 0 writes the initial "
+                        "state only; in the "
+                        "unit the prm gives t; "
                         "mm of punch travel for the square cup, where t is "
                         "the punch travel: punch Translation = 0; 0; -t); "
                         "in cases without a punch it is the end value of "
@@ -36,6 +38,16 @@ namespace deepdraw
       final_load         = prm.get_double("Final load");
       blank_holder_force = prm.get("Blank holder force");
       prm.leave_subsection();
+    }
+
+
+    std::vector<double>
+    ProcessParameters::check_loads() const
+    {
+      std::vector<double> loads;
+      for (unsigned int k = 0; k <= 10; ++k)
+        loads.push_back(k == 10 ? final_load : final_load * k / 10.);
+      return loads;
     }
   } // namespace problem
 } // namespace deepdraw

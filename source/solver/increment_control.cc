@@ -13,17 +13,20 @@ namespace deepdraw
       prm.enter_subsection("Load stepping");
       prm.declare_entry("Initial increment",
                         "0.1",
-                        Patterns::Double(0.),
-                        "First increment of the load parameter.");
+                        Patterns::Double(0., 1e6),
+                        "First increment of the load parameter (0 < value "
+                        "<= 1e6).");
       prm.declare_entry("Minimum increment",
                         "1e-6",
-                        Patterns::Double(0.),
+                        Patterns::Double(0., 1e6),
                         "The run stops with an error if a cut-back would "
-                        "make the increment smaller than this.");
+                        "make the increment smaller than this (0 to Initial "
+                        "increment).");
       prm.declare_entry("Maximum increment",
                         "0.1",
-                        Patterns::Double(0.),
-                        "Upper bound of the increment after regrowth.");
+                        Patterns::Double(0., 1e6),
+                        "Upper bound of the increment after regrowth (0 < "
+                        "value <= 1e6).");
       prm.declare_entry("Cut-back factor",
                         "0.5",
                         Patterns::Double(0.01, 0.99),
@@ -31,19 +34,20 @@ namespace deepdraw
                         "attempt.");
       prm.declare_entry("Growth factor",
                         "1.5",
-                        Patterns::Double(1.),
+                        Patterns::Double(1., 10.),
                         "Factor applied to the increment after an easy "
-                        "increment (see Easy increment iterations).");
+                        "increment (see Easy increment iterations; 1 to "
+                        "10).");
       prm.declare_entry("Easy increment iterations",
                         "4",
-                        Patterns::Integer(1),
+                        Patterns::Integer(1, 1000),
                         "An increment that converged in at most this many "
                         "Newton iterations counts as easy.");
       prm.declare_entry("Maximum cut-backs",
                         "12",
-                        Patterns::Integer(0),
+                        Patterns::Integer(0, 100),
                         "Cut-backs allowed for one increment before the run "
-                        "stops.");
+                        "stops (0 to 100).");
       prm.leave_subsection();
     }
 

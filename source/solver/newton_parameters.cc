@@ -1,4 +1,7 @@
+#include <deepdraw/io/input_error.h>
 #include <deepdraw/solver/newton_parameters.h>
+#include <string>
+#include <utility>
 
 namespace deepdraw
 {
@@ -10,32 +13,34 @@ namespace deepdraw
       prm.enter_subsection("Newton");
       prm.declare_entry("Maximum iterations",
                         "15",
-                        Patterns::Integer(1),
+                        Patterns::Integer(1, 1000),
                         "Newton iterations allowed per increment before it "
-                        "is cut back.");
-      prm.declare_entry("Force tolerance",
-                        "1e-6",
-                        Patterns::Double(0.),
-                        "The increment has converged when the out-of-balance "
-                        "force norm over the free displacement unknowns, and "
-                        "that of the contact equations (r F_sup and the tool "
-                        "equations), each divided by the norm of the "
-                        "internal force vector (reactions included), are "
-                        "below this, and the correction criterion holds.");
-      prm.declare_entry("Correction tolerance",
-                        "1e-6",
-                        Patterns::Double(0.),
-                        "The last Newton correction of the displacements, "
-                        "divided by the larger of the increment and the "
-                        "total displacement, must be below this for "
-                        "convergence (from the second iteration after the "
-                        "predictor on).");
+                        "is cut back (1 to 1000).");
+      prm.declare_entry(
+        "Force tolerance",
+        "1e-6",
+        Patterns::Double(0., 1.),
+        "0 < value < 1. The increment has converged when the out-of-balance "
+        "force norm over the free displacement unknowns, and "
+        "that of the contact equations (r F_sup and the tool "
+        "equations), each divided by the norm of the "
+        "internal force vector (reactions included), are "
+        "below this, and the correction criterion holds.");
+      prm.declare_entry(
+        "Correction tolerance",
+        "1e-6",
+        Patterns::Double(0., 1.),
+        "0 < value < 1. The last Newton correction of the displacements, "
+        "divided by the larger of the increment and the "
+        "total displacement, must be below this for "
+        "convergence (from the second iteration after the "
+        "predictor on).");
       prm.declare_entry("Divergence ratio",
                         "1e4",
-                        Patterns::Double(1.),
+                        Patterns::Double(1., 1e100),
                         "An increment counts as diverging when its residual "
                         "exceeds the smallest residual of the increment by "
-                        "this factor.");
+                        "this factor (1 to 1e100).");
       prm.declare_entry("Line search steps",
                         "4",
                         Patterns::Integer(0, 20),
@@ -44,7 +49,7 @@ namespace deepdraw
                         "line search off).");
       prm.declare_entry("Stagnation iterations",
                         "8",
-                        Patterns::Integer(0),
+                        Patterns::Integer(0, 1000),
                         "An increment whose relative residual is still above "
                         "Stagnation residual after this many iterations is "
                         "cut back without using up Maximum iterations "
@@ -52,9 +57,9 @@ namespace deepdraw
                         "never converged but cost half the run time.");
       prm.declare_entry("Stagnation residual",
                         "0.1",
-                        Patterns::Double(0.),
+                        Patterns::Double(0., 1e100),
                         "See Stagnation iterations (relative residual, as "
-                        "Force tolerance).");
+                        "Force tolerance; 0 to 1e100).");
       prm.declare_entry(
         "Predictor",
         "tangent",
@@ -69,8 +74,8 @@ namespace deepdraw
       prm.declare_entry(
         "Tool force tolerance",
         "0",
-        Patterns::Double(0.),
-        "If > 0, convergence also requires the force of every "
+        Patterns::Double(0., 1.),
+        "0 <= value < 1. If > 0, convergence also requires the force of every "
         "force-controlled tool to equal its prescribed force to this "
         "relative error (a zero prescribed force: relative to the force "
         "scale of Force tolerance). The tool equations are part of the contact "
@@ -94,6 +99,19 @@ namespace deepdraw
       predictor             = prm.get("Predictor");
       tool_force_tolerance  = prm.get_double("Tool force tolerance");
       prm.leave_subsection();
+
+      // A tolerance of 0 can never be met (every increment would be cut back
+      // to Minimum increment), 1 accepts anything (D50).
+      const std::pair<const char *, double> tolerances[]
+        = {{"Force tolerance", force_tolerance},
+           {"Correction tolerance", correction_tolerance},
+           {"Tool force tolerance", tool_force_tolerance}};
+      for (const auto &[name, value] : tolerances)
+        if (!(value < 1.) || (value == 0. && name[0] != 'T'))
+          throw InputError(
+            "Newton/" + std::string(name) + " = " + std::to_string(value)
+            + " is not allowed: "
+            + (name[0] == 'T' ? "0 <= value < 1" : "0 < value < 1"));
     }
   } // namespace solver
 } // namespace deepdraw

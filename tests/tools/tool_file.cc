@@ -228,7 +228,8 @@ main()
   }
 
   // Round trip of the square-cup tools (quarter and full) and of a random
-  // rational patch whose numbers need all 17 digits.
+  // rational patch whose numbers need all 17 digits (a perturbed grid: a
+  // net that folds over is rejected by the reader).
   {
     SquareCupToolParameters parameters;
     std::vector<RigidTool>  tools = build_square_cup_tools(parameters, 0.81);
@@ -246,8 +247,9 @@ main()
     std::vector<double>                    weights;
     for (unsigned int n = 0; n < 12; ++n)
     {
-      points.emplace_back(uniform(rng) * 1e3,
-                          uniform(rng) * 1e-7,
+      const unsigned int i = n % 4, j = n / 4;
+      points.emplace_back((i + 0.2 * uniform(rng)) * 1e3 / 3.,
+                          (j + 0.2 * uniform(rng)) * 10.,
                           uniform(rng) / 3.);
       weights.push_back(1.5 + uniform(rng));
     }

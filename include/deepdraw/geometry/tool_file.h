@@ -1,6 +1,7 @@
 // Plain-text tool files (format: doc/tool_files.md). Reading checks every
 // line and throws deepdraw::InputError "file:line: what is wrong" on the
-// first error; writing uses max_digits10 so that write → read is exact.
+// first error; writing uses max_digits10 so that write → read is exact and
+// throws io::OutputError if the file cannot be written.
 #ifndef deepdraw_geometry_tool_file_h
 #define deepdraw_geometry_tool_file_h
 

@@ -1,6 +1,8 @@
 // VTU output of a tool at its current placement, for ParaView: every patch
 // triangulated on a (subdivisions × subdivisions) parameter grid, with the
-// unit normal as point data and the patch index as cell data.
+// unit normal as point data and the patch index as cell data. Written
+// through filename.tmp and a rename; throws io::OutputError if the file
+// cannot be written or a point is not finite.
 #ifndef deepdraw_geometry_tool_vtu_h
 #define deepdraw_geometry_tool_vtu_h
 

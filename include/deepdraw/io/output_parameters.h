@@ -22,8 +22,14 @@ namespace deepdraw
 
       static void
       declare_parameters(ParameterHandler &prm);
+      // Throws InputError if two travels give the same file name.
       void
       parse_parameters(ParameterHandler &prm);
+
+      // The travel as it appears in thickness_OX_<label>mm.csv: 10
+      // significant digits, no trailing zeros.
+      static std::string
+      travel_label(double travel);
     };
   } // namespace io
 } // namespace deepdraw

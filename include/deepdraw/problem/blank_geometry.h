@@ -32,11 +32,26 @@ namespace deepdraw
       bool         symmetry_plane_y         = true; // plane y = 0
       double       mesh_distortion          = 0.;
 
+      // Largest allowed Length, Width, Thickness (mm) and element count
+      // along one direction (D50).
+      static constexpr double max_extent   = 1e4;
+      static constexpr int    max_elements = 100000;
+
       // Entries of subsection Geometry.
       static void
       declare_parameters(ParameterHandler &prm);
       void
       parse_parameters(ParameterHandler &prm);
+
+      // max(Length, Width, Thickness) and the diagonal of the blank (mm):
+      // the scales the bounds of lengths elsewhere refer to.
+      double
+      largest_extent() const;
+      double
+      diagonal() const;
+      // Number of cells of the mesh.
+      double
+      n_cells() const;
 
       // The mesh, and for every vertex the through-thickness column it
       // belongs to (i + j (nx + 1)) and its layer (0 = bottom), found before

@@ -49,8 +49,12 @@ namespace deepdraw
       // Boundary id of the sheet face it touches: 4 bottom, 5 top.
       unsigned int sheet_face       = 5;
       bool         force_controlled = false;
-      // Displacement control: translation (3 expressions of t, mm).
+      // Displacement control: translation (3 expressions of t, mm), and
+      // its text for messages.
       std::shared_ptr<FunctionParser<1>> translation;
+      std::string                        translation_expression;
+      // "Contact/Tool N/", for messages.
+      std::string parameter_prefix;
       // Force control: axis a (unit) and force F(t) in N along a
       // (Process/Blank holder force, shared by all force-controlled tools).
       Tensor<1, 3>                       axis;
@@ -73,6 +77,19 @@ namespace deepdraw
 
       bool
       active() const;
+
+      // Largest force (N) a force-controlled tool may be given (D50).
+      static constexpr double max_force = 1e9;
+
+      // Input checks that need the blank and the run (D50): Search distance
+      // at most blank_diagonal; every translation finite and within
+      // +-length_bound (mm) and every tool force finite and at most
+      // max_force at each of loads (ProcessParameters::check_loads). Throws
+      // InputError naming the parameter, the value and the load.
+      void
+      check_values(const std::vector<double> &loads,
+                   double                     blank_diagonal,
+                   double                     length_bound) const;
 
       // Builds the tools (square-cup builder tools need the geometry of
       // subsection Tools and the sheet thickness; a free edge of a CAD
@@ -173,9 +190,13 @@ namespace deepdraw
       tools() const;
       const std::vector<ToolDefinition> &
       tool_definitions() const;
-      // Translation of displacement-controlled tool k at load t.
+      // Translation of displacement-controlled tool k at load t, and the
+      // force of force-controlled tool k; both throw std::runtime_error
+      // naming the parameter if the value is not finite (exit code 3).
       Tensor<1, 3>
       prescribed_translation(unsigned int k, double load) const;
+      double
+      prescribed_force(unsigned int k, double load) const;
       // Unknowns of the positions of the force-controlled tools.
       std::vector<types::global_dof_index>
       tool_position_unknowns() const;
@@ -227,8 +248,10 @@ namespace deepdraw
         bool open_at_start = false;
       };
 
-      contact::ContactParameters       parameters;
-      double                           search_distance = 2.;
+      contact::ContactParameters parameters;
+      double                     search_distance = 2.;
+      // Process/Blank holder force, for messages.
+      std::string                      holder_force_expression;
       std::vector<ToolDefinition>      definitions;
       std::vector<geometry::RigidTool> tool_list;
       // Unknown index of the position of each force-controlled tool

@@ -12,6 +12,7 @@
 #include <array>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/tensor.h>
+#include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
@@ -186,6 +187,10 @@ namespace deepdraw
                        const solver::ResidualMeasures &residuals,
                        double relative_correction) override;
 
+      // Checks that need several subsections (forming_problem_input.cc);
+      // throws InputError.
+      void
+      check_input() const;
       void
       setup_system();
       void
@@ -253,12 +258,19 @@ namespace deepdraw
       void
       open_output_files(bool resume);
       void
+      open_output_tables(bool resume);
+      void
       write_vtu(double load);
       void
       write_increment_tables(double load);
       // thickness_OX/OD_<travel>mm.csv at a requested travel.
       void
       write_thickness_profiles(double travel);
+
+      // Wall time since the problem was constructed: the reported run time
+      // includes the set-up (mesh, tools, pairs), which a tool of many
+      // patches makes long.
+      Timer wall_timer;
 
       // Parameters
       BlankGeometry                      geometry;

@@ -11,6 +11,7 @@
 
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
+#include <deepdraw/problem/blank_geometry.h>
 #include <memory>
 #include <string>
 #include <vector>
@@ -23,9 +24,11 @@ namespace deepdraw
 
     struct PrescribedDisplacement
     {
-      unsigned int                       boundary_id;
-      unsigned int                       component;
-      std::string                        expression;
+      unsigned int boundary_id;
+      unsigned int component;
+      std::string  expression;
+      // The whole item 'FACE: COMPONENT = EXPRESSION', for messages.
+      std::string                        item;
       std::shared_ptr<FunctionParser<3>> function; // of (x, y, z) and t
     };
 
@@ -40,7 +43,20 @@ namespace deepdraw
                        bool              symmetry_plane_x,
                        bool              symmetry_plane_y);
 
-      // Displacement component at initial position X and load t.
+      // Largest |u| allowed at the check loads, in blank sizes (D50).
+      static constexpr double max_relative_displacement = 100.;
+
+      // Evaluates every entry at the nodes of its face at each of loads
+      // (ProcessParameters::check_loads): throws InputError naming the
+      // entry, the load and the point where a value is not finite or
+      // larger than max_relative_displacement x the largest blank extent.
+      void
+      check_values(const BlankGeometry       &geometry,
+                   const std::vector<double> &loads) const;
+
+      // Displacement component at initial position X and load t; throws
+      // std::runtime_error naming the entry if it is not finite (a run-time
+      // failure, exit code 3).
       double
       value(const PrescribedDisplacement &entry,
             const Point<3>               &X,

@@ -6,6 +6,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <string>
+#include <vector>
 
 namespace deepdraw
 {
@@ -25,6 +26,12 @@ namespace deepdraw
       declare_parameters(ParameterHandler &prm);
       void
       parse_parameters(ParameterHandler &prm);
+
+      // The loads at which every expression of t is checked when the input
+      // is read (D50): 0, the final load and the nine loads that divide
+      // [0, final load] into ten equal parts.
+      std::vector<double>
+      check_loads() const;
     };
   } // namespace problem
 } // namespace deepdraw
