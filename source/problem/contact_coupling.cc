@@ -284,6 +284,19 @@ namespace deepdraw
     }
 
 
+    void
+    ContactCoupling::add_open_multipliers(
+      std::vector<types::global_dof_index> &unknowns) const
+    {
+      // Open: P = 0 whatever lambda and du are, so dP/d(du, lambda, z) = 0
+      // and F_sup = lambda / r (doc/theory.md §7, D60).
+      for (const Pair &pair : pairs)
+        if (pair.result.state == contact::ContactState::open)
+          for (unsigned int c = 0; c < 3; ++c)
+            unknowns.push_back(pair.first_multiplier + c);
+    }
+
+
     double
     ContactCoupling::residual_norm(const Vector<double> &rhs) const
     {

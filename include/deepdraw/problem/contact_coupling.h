@@ -126,6 +126,13 @@ namespace deepdraw
                double                           new_load,
                bool                             predictor = false);
 
+      // Appends the multiplier unknowns of the pairs open after the last
+      // assemble(): their rows and columns hold only the diagonal 1/r (the
+      // linear solver leaves them out, D60).
+      void
+      add_open_multipliers(
+        std::vector<types::global_dof_index> &unknowns) const;
+
       // sqrt(sum |r F_sup|^2 + sum (holder residual)^2): a force (N).
       double
       residual_norm(const Vector<double> &rhs) const;
