@@ -228,6 +228,14 @@ namespace deepdraw
         bool open_at_start = false;
       };
 
+      // Projection of the pair's node at `solution` and its contact law
+      // (pair.result); true if its state changed.
+      bool
+      evaluate_pair(Pair                        &pair,
+                    const std::vector<Point<3>> &positions,
+                    const Vector<double>        &solution,
+                    bool                         predictor) const;
+
       contact::ContactParameters       parameters;
       double                           search_distance = 2.;
       std::vector<ToolDefinition>      definitions;
