@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <deepdraw/fe/hexahedron_element.h>
 #include <deepdraw/fe/selective_reduced_quadrature.h>
@@ -401,12 +402,15 @@ namespace deepdraw
           c -= K_aa_inverse[k * ne + l] * full_residual[nu + l];
         enhanced.correction[k] = c;
         enhanced.values[k]     = alpha[k];
-        for (unsigned int j = 0; j < nu; ++j)
+        // Row by row of K_au, contiguous in j (vectorised).
+        double *sensitivity = &enhanced.sensitivity[k * nu];
+        std::fill(sensitivity, sensitivity + nu, 0.);
+        for (unsigned int l = 0; l < ne; ++l)
         {
-          double s = 0.;
-          for (unsigned int l = 0; l < ne; ++l)
-            s -= K_aa_inverse[k * ne + l] * K[(nu + l) * n + j];
-          enhanced.sensitivity[k * nu + j] = s;
+          const double  factor = -K_aa_inverse[k * ne + l];
+          const double *K_au_l = K + (nu + l) * n;
+          for (unsigned int j = 0; j < nu; ++j)
+            sensitivity[j] += factor * K_au_l[j];
         }
       }
       for (unsigned int j = 0; j < nu; ++j)
@@ -421,12 +425,14 @@ namespace deepdraw
         residual[i] = r;
         if (matrix == nullptr)
           continue;
-        for (unsigned int j = 0; j < nu; ++j)
+        double *K_i = &(*matrix)(i, 0);
+        std::copy(K + i * n, K + i * n + nu, K_i);
+        for (unsigned int k = 0; k < ne; ++k)
         {
-          double value = K[i * n + j];
-          for (unsigned int k = 0; k < ne; ++k)
-            value += K_ua[k] * enhanced.sensitivity[k * nu + j];
-          (*matrix)(i, j) = value;
+          const double  factor      = K_ua[k];
+          const double *sensitivity = &enhanced.sensitivity[k * nu];
+          for (unsigned int j = 0; j < nu; ++j)
+            K_i[j] += factor * sensitivity[j];
         }
       }
       return ElementStatus::ok;
