@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <deepdraw/fe/hexahedron_element.h>
 #include <deepdraw/fe/selective_reduced_quadrature.h>
@@ -44,7 +45,7 @@ namespace deepdraw
                                  const QuadraturePointHistory *old_history,
                                  QuadraturePointHistory       *trial_history,
                                  double                       *residual,
-                                 double                       *matrix,
+                                 Tensor<4, 3>                 *tangents,
                                  unsigned int &plastic_points) const
     {
       const unsigned int n = dofs_per_cell + n_enhanced;
@@ -59,22 +60,7 @@ namespace deepdraw
         mean_divergence += u[a] * geometry.mean_gradient[a];
 
       std::fill(residual, residual + n, 0.);
-      if (matrix != nullptr)
-        std::fill(matrix, matrix + n * n, 0.);
-      Tensor<4, 3> A;
       Tensor<2, 3> P;
-      // Column j: G_j = e_{component[j]} (x) vector[j] + beta[j] I.
-      unsigned int        component[max_element_size];
-      const Tensor<1, 3> *vector[max_element_size];
-      double              beta[max_element_size];
-      for (unsigned int k = 0; k < n_enhanced; ++k)
-      {
-        component[dofs_per_cell + k] = k % 3;
-        beta[dofs_per_cell + k]      = 0.;
-      }
-      for (unsigned int i = 0; i < dofs_per_cell; ++i)
-        component[i] = local_component[i];
-
       for (unsigned int q = 0; q < n_weighted_points; ++q)
       {
         const Tensor<1, 3> *g       = &geometry.gradient[q * 8];
@@ -100,7 +86,8 @@ namespace deepdraw
                                     H,
                                     trial_history[q],
                                     P,
-                                    matrix != nullptr ? &A : nullptr,
+                                    tangents != nullptr ? &tangents[q]
+                                                        : nullptr,
                                     plastic);
         if (status == PointStatus::inverted)
           return ElementStatus::inverted;
@@ -108,6 +95,109 @@ namespace deepdraw
           return ElementStatus::return_mapping_failed;
         plastic_points += plastic;
 
+        // r_j = w G_j : P with G_j = e_c (x) v_j + beta_j I.
+        const double w = geometry.JxW[q];
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+        {
+          const unsigned int a = local_node[i], c = local_component[i];
+          double             value = P[c] * g[a];
+          if (mean_dilatation)
+            value += (geometry.mean_gradient[a][c] - g[a][c]) / 3. * trace(P);
+          residual[i] += w * value;
+        }
+        for (unsigned int k = 0; k < n_enhanced; ++k)
+          residual[dofs_per_cell + k] += w * (P[k % 3] * g_modes[k / 3]);
+        if (tangents != nullptr)
+          tangents[q] *= w;
+      }
+      return ElementStatus::ok;
+    }
+
+
+    namespace
+    {
+      // K_ij += G_i : A : G_j for i, j in [first, n) at one point (A
+      // weighted), in two sparse steps: T_j = A : G_j, stored as
+      // T[c][m][j] = (T_j)_cm, then
+      //   K_ij += sum_m v_i[m] T[c_i][m][j] + beta_i tr T_j,
+      // contiguous in j. The trace terms only with mean dilatation.
+      template <bool with_trace>
+      void
+      add_point_tangent(const Tensor<4, 3>        &A,
+                        const unsigned int        *component,
+                        const Tensor<1, 3> *const *vector,
+                        const double              *beta,
+                        const unsigned int         first,
+                        const unsigned int         n,
+                        double                    *matrix)
+      {
+        double A_trace[3][3]; // sum_l A[c][m][l][l]
+        if constexpr (with_trace)
+          for (unsigned int c = 0; c < 3; ++c)
+            for (unsigned int m = 0; m < 3; ++m)
+              A_trace[c][m] = A[c][m][0][0] + A[c][m][1][1] + A[c][m][2][2];
+        alignas(64) double T[3][3][max_element_size];
+        double             trace_T[max_element_size];
+        for (unsigned int j = first; j < n; ++j)
+        {
+          const Tensor<1, 3> &v = *vector[j];
+          const unsigned int  d = component[j];
+          for (unsigned int c = 0; c < 3; ++c)
+            for (unsigned int m = 0; m < 3; ++m)
+            {
+              const Tensor<1, 3> &A_cmd = A[c][m][d];
+              double              value
+                = A_cmd[0] * v[0] + A_cmd[1] * v[1] + A_cmd[2] * v[2];
+              if constexpr (with_trace)
+                value += beta[j] * A_trace[c][m];
+              T[c][m][j] = value;
+            }
+          if constexpr (with_trace)
+            trace_T[j] = T[0][0][j] + T[1][1][j] + T[2][2][j];
+        }
+        for (unsigned int i = first; i < n; ++i)
+        {
+          const Tensor<1, 3> &v   = *vector[i];
+          const double       *T_0 = T[component[i]][0];
+          const double       *T_1 = T[component[i]][1];
+          const double       *T_2 = T[component[i]][2];
+          double             *K_i = matrix + i * n;
+          for (unsigned int j = first; j < n; ++j)
+          {
+            double value = v[0] * T_0[j] + v[1] * T_1[j] + v[2] * T_2[j];
+            if constexpr (with_trace)
+              value += beta[i] * trace_T[j];
+            K_i[j] += value;
+          }
+        }
+      }
+    } // namespace
+
+
+    void
+    HexahedronElement::tangent_matrix(const CellGeometry &geometry,
+                                      const Tensor<4, 3> *tangents,
+                                      const unsigned int  first,
+                                      double             *matrix) const
+    {
+      const unsigned int n = dofs_per_cell + n_enhanced;
+      for (unsigned int i = first; i < n; ++i)
+        std::fill(matrix + i * n + first, matrix + (i + 1) * n, 0.);
+      // Column j: G_j = e_{component[j]} (x) vector[j] + beta[j] I.
+      unsigned int        component[max_element_size];
+      const Tensor<1, 3> *vector[max_element_size];
+      double              beta[max_element_size];
+      for (unsigned int i = 0; i < dofs_per_cell; ++i)
+        component[i] = local_component[i];
+      for (unsigned int k = 0; k < n_enhanced; ++k)
+      {
+        component[dofs_per_cell + k] = k % 3;
+        beta[dofs_per_cell + k]      = 0.;
+      }
+      for (unsigned int q = 0; q < n_weighted_points; ++q)
+      {
+        const Tensor<1, 3> *g       = &geometry.gradient[q * 8];
+        const Tensor<1, 3> *g_modes = &geometry.mode_gradient[q * 3];
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
         {
           const unsigned int a = local_node[i], c = local_component[i];
@@ -118,49 +208,23 @@ namespace deepdraw
         }
         for (unsigned int k = 0; k < n_enhanced; ++k)
           vector[dofs_per_cell + k] = &g_modes[k / 3];
-
-        const double w       = geometry.JxW[q];
-        const double trace_P = trace(P);
-        for (unsigned int i = 0; i < n; ++i)
-          residual[i] += w * (P[component[i]] * *vector[i] + beta[i] * trace_P);
-        if (matrix == nullptr)
-          continue;
-
-        // K_ij += w G_i : A : G_j in two sparse steps: T_j = w A : G_j,
-        // stored as T[c][m][j] = (T_j)_cm, then
-        //   K_ij += sum_m v_i[m] T[c_i][m][j] + beta_i tr T_j,
-        // contiguous in j.
-        double A_trace[3][3]; // sum_l A[c][m][l][l]
-        for (unsigned int c = 0; c < 3; ++c)
-          for (unsigned int m = 0; m < 3; ++m)
-            A_trace[c][m] = A[c][m][0][0] + A[c][m][1][1] + A[c][m][2][2];
-        double T[3][3][max_element_size], trace_T[max_element_size];
-        for (unsigned int j = 0; j < n; ++j)
-        {
-          const Tensor<1, 3> &v = *vector[j];
-          const unsigned int  d = component[j];
-          for (unsigned int c = 0; c < 3; ++c)
-            for (unsigned int m = 0; m < 3; ++m)
-            {
-              const Tensor<1, 3> &A_cmd = A[c][m][d];
-              T[c][m][j]                = w
-                           * (A_cmd[0] * v[0] + A_cmd[1] * v[1]
-                              + A_cmd[2] * v[2] + beta[j] * A_trace[c][m]);
-            }
-          trace_T[j] = T[0][0][j] + T[1][1][j] + T[2][2][j];
-        }
-        for (unsigned int i = 0; i < n; ++i)
-        {
-          const Tensor<1, 3> &v      = *vector[i];
-          const unsigned int  c      = component[i];
-          const double        beta_i = beta[i];
-          double             *K_i    = matrix + i * n;
-          for (unsigned int j = 0; j < n; ++j)
-            K_i[j] += v[0] * T[c][0][j] + v[1] * T[c][1][j] + v[2] * T[c][2][j]
-                      + beta_i * trace_T[j];
-        }
+        if (mean_dilatation)
+          add_point_tangent<true>(tangents[q],
+                                  component,
+                                  vector,
+                                  beta,
+                                  first,
+                                  n,
+                                  matrix);
+        else
+          add_point_tangent<false>(tangents[q],
+                                   component,
+                                   vector,
+                                   beta,
+                                   first,
+                                   n,
+                                   matrix);
       }
-      return ElementStatus::ok;
     }
 
 
@@ -223,17 +287,24 @@ namespace deepdraw
                                 unsigned int &plastic_points) const
     {
       constexpr unsigned int nu = dofs_per_cell;
+      Tensor<4, 3>           tangents[n_weighted_points];
       if (n_enhanced == 0)
-        // FullMatrix stores its entries row by row: integrate() fills the
-        // 24 x 24 matrix in place.
-        return integrate(geometry,
-                         du,
-                         nullptr,
-                         old_history,
-                         trial_history,
-                         residual,
-                         matrix != nullptr ? &(*matrix)(0, 0) : nullptr,
-                         plastic_points);
+      {
+        const ElementStatus status
+          = integrate(geometry,
+                      du,
+                      nullptr,
+                      old_history,
+                      trial_history,
+                      residual,
+                      matrix != nullptr ? tangents : nullptr,
+                      plastic_points);
+        // FullMatrix stores its entries row by row: the 24 x 24 matrix is
+        // integrated in place.
+        if (status == ElementStatus::ok && matrix != nullptr)
+          tangent_matrix(geometry, tangents, 0, &(*matrix)(0, 0));
+        return status;
+      }
 
       // The enhanced parameters: predicted from the last linearisation,
       // then Newton on r_alpha(du, alpha) = 0 at fixed du.
@@ -266,7 +337,7 @@ namespace deepdraw
                                                old_history,
                                                trial_history,
                                                full_residual,
-                                               K,
+                                               tangents,
                                                points_plastic);
         double              force_scale = 0., enhanced_residual = 0., norm = 0.;
         for (unsigned int i = 0; i < nu; ++i)
@@ -297,6 +368,9 @@ namespace deepdraw
           return status != ElementStatus::ok
                    ? status
                    : ElementStatus::enhanced_not_converged;
+        // K_aa alone for the local Newton step; the whole K once alpha
+        // has converged.
+        tangent_matrix(geometry, tangents, nu, K);
         for (unsigned int k = 0; k < ne; ++k)
           for (unsigned int l = 0; l < ne; ++l)
             K_aa_inverse[k * ne + l] = K[(nu + k) * n + nu + l];
@@ -317,6 +391,7 @@ namespace deepdraw
         }
       }
       plastic_points += points_plastic;
+      tangent_matrix(geometry, tangents, 0, K);
 
       // Condensation. correction = -K_aa^{-1} r_a (the remaining Newton
       // step of alpha), sensitivity = d alpha / d du = -K_aa^{-1} K_au.
@@ -327,12 +402,15 @@ namespace deepdraw
           c -= K_aa_inverse[k * ne + l] * full_residual[nu + l];
         enhanced.correction[k] = c;
         enhanced.values[k]     = alpha[k];
-        for (unsigned int j = 0; j < nu; ++j)
+        // Row by row of K_au, contiguous in j (vectorised).
+        double *sensitivity = &enhanced.sensitivity[k * nu];
+        std::fill(sensitivity, sensitivity + nu, 0.);
+        for (unsigned int l = 0; l < ne; ++l)
         {
-          double s = 0.;
-          for (unsigned int l = 0; l < ne; ++l)
-            s -= K_aa_inverse[k * ne + l] * K[(nu + l) * n + j];
-          enhanced.sensitivity[k * nu + j] = s;
+          const double  factor = -K_aa_inverse[k * ne + l];
+          const double *K_au_l = K + (nu + l) * n;
+          for (unsigned int j = 0; j < nu; ++j)
+            sensitivity[j] += factor * K_au_l[j];
         }
       }
       for (unsigned int j = 0; j < nu; ++j)
@@ -347,12 +425,14 @@ namespace deepdraw
         residual[i] = r;
         if (matrix == nullptr)
           continue;
-        for (unsigned int j = 0; j < nu; ++j)
+        double *K_i = &(*matrix)(i, 0);
+        std::copy(K + i * n, K + i * n + nu, K_i);
+        for (unsigned int k = 0; k < ne; ++k)
         {
-          double value = K[i * n + j];
-          for (unsigned int k = 0; k < ne; ++k)
-            value += K_ua[k] * enhanced.sensitivity[k * nu + j];
-          (*matrix)(i, j) = value;
+          const double  factor      = K_ua[k];
+          const double *sensitivity = &enhanced.sensitivity[k * nu];
+          for (unsigned int j = 0; j < nu; ++j)
+            K_i[j] += factor * sensitivity[j];
         }
       }
       return ElementStatus::ok;

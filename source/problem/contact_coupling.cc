@@ -3,7 +3,9 @@
 // force-controlled tool, the convergence measures and the output
 // aggregates (doc/theory_contact.md); the tool slots are in
 // contact_coupling_tools.cc.
+#include <algorithm>
 #include <cmath>
+#include <deal.II/base/parallel.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/lac/full_matrix.h>
@@ -162,6 +164,66 @@ namespace deepdraw
     }
 
 
+    bool
+    ContactCoupling::evaluate_pair(Pair                        &pair,
+                                   const std::vector<Point<3>> &positions,
+                                   const Vector<double>        &solution,
+                                   const bool                   predictor) const
+    {
+      const bool                  was_found      = pair.found;
+      const contact::ContactState previous_state = pair.result.state;
+      Tensor<1, 3>                du, lambda;
+      for (unsigned int c = 0; c < 3; ++c)
+      {
+        du[c]     = solution[pair.u_dofs[c]];
+        lambda[c] = solution[pair.first_multiplier + c];
+      }
+      const Point<3>             x    = positions[pair.vertex] + du;
+      const geometry::RigidTool &tool = tool_list[pair.tool];
+      geometry::ProjectionResult projection;
+      pair.found = tool.project(x, projection, search_distance)
+                   && !projection.on_free_edge;
+      // In the predictor the tool has moved but the sheet not yet: the
+      // gaps of open pairs say nothing about the new state; closing them
+      // flattened the sheet against the punch and Newton then had to open
+      // them again one ring at a time.
+      if (pair.found && !(predictor && pair.open_at_start))
+      {
+        geometry::ProjectionResult closest = projection;
+        if (projection.on_edge)
+        {
+          // Clamped feet keep the frozen linearisation (zero tangents:
+          // no curvature terms, ContactPairKinematics).
+          closest.tangent_u = closest.tangent_v = Tensor<1, 3>();
+          closest.x_uu = closest.x_uv = closest.x_vv = Tensor<1, 3>();
+        }
+        const bool force_controlled = definitions[pair.tool].force_controlled;
+        const contact::ContactPairKinematics kinematics(
+          x,
+          du,
+          closest,
+          translation_at_end[pair.tool] - translation_at_start[pair.tool],
+          force_controlled ? definitions[pair.tool].axis : Tensor<1, 3>(),
+          parameters.linearisation);
+        pair.result = contact::evaluate_contact_pair(*law,
+                                                     kinematics,
+                                                     lambda,
+                                                     pair.augmentation);
+      }
+      else
+      {
+        // Far from the tool: open, F_sup = lambda / r.
+        pair.result                     = contact::ContactPairResult();
+        pair.result.state               = contact::ContactState::open;
+        pair.result.constraint_residual = lambda / pair.augmentation;
+        pair.result.dconstraint_dmultiplier
+          = Tensor<2, 3>(unit_symmetric_tensor<3>()) / pair.augmentation;
+        pair.result.normal_gap = search_distance;
+      }
+      return was_found != pair.found || previous_state != pair.result.state;
+    }
+
+
     unsigned int
     ContactCoupling::assemble(const std::vector<Point<3>>     &positions,
                               const Vector<double>            &solution,
@@ -182,63 +244,21 @@ namespace deepdraw
                                         translation_at_end[k]);
         }
 
-      // Projection and local law of every pair.
-      unsigned int changes = 0;
-      for (Pair &pair : pairs)
+      // Projection and local law of every pair, independent of each other:
+      // on all threads (D61).
+      std::vector<unsigned char> changed(pairs.size(), 0);
+      const auto                 evaluate_pairs
+        = [&](const std::size_t begin, const std::size_t end)
       {
-        const bool                  was_found      = pair.found;
-        const contact::ContactState previous_state = pair.result.state;
-        Tensor<1, 3>                du, lambda;
-        for (unsigned int c = 0; c < 3; ++c)
-        {
-          du[c]     = solution[pair.u_dofs[c]];
-          lambda[c] = solution[pair.first_multiplier + c];
-        }
-        const Point<3>             x    = positions[pair.vertex] + du;
-        const geometry::RigidTool &tool = tool_list[pair.tool];
-        geometry::ProjectionResult projection;
-        pair.found = tool.project(x, projection, search_distance)
-                     && !projection.on_free_edge;
-        // In the predictor the tool has moved but the sheet not yet: the
-        // gaps of open pairs say nothing about the new state; closing them
-        // flattened the sheet against the punch and Newton then had to open
-        // them again one ring at a time.
-        if (pair.found && !(predictor && pair.open_at_start))
-        {
-          geometry::ProjectionResult closest = projection;
-          if (projection.on_edge)
-          {
-            // Clamped feet keep the frozen linearisation (zero tangents:
-            // no curvature terms, ContactPairKinematics).
-            closest.tangent_u = closest.tangent_v = Tensor<1, 3>();
-            closest.x_uu = closest.x_uv = closest.x_vv = Tensor<1, 3>();
-          }
-          const bool force_controlled = definitions[pair.tool].force_controlled;
-          const contact::ContactPairKinematics kinematics(
-            x,
-            du,
-            closest,
-            translation_at_end[pair.tool] - translation_at_start[pair.tool],
-            force_controlled ? definitions[pair.tool].axis : Tensor<1, 3>(),
-            parameters.linearisation);
-          pair.result = contact::evaluate_contact_pair(*law,
-                                                       kinematics,
-                                                       lambda,
-                                                       pair.augmentation);
-        }
-        else
-        {
-          // Far from the tool: open, F_sup = lambda / r.
-          pair.result                     = contact::ContactPairResult();
-          pair.result.state               = contact::ContactState::open;
-          pair.result.constraint_residual = lambda / pair.augmentation;
-          pair.result.dconstraint_dmultiplier
-            = Tensor<2, 3>(unit_symmetric_tensor<3>()) / pair.augmentation;
-          pair.result.normal_gap = search_distance;
-        }
-        if (was_found != pair.found || previous_state != pair.result.state)
-          ++changes;
-      }
+        for (std::size_t p = begin; p < end; ++p)
+          changed[p] = evaluate_pair(pairs[p], positions, solution, predictor);
+      };
+      parallel::apply_to_subranges(std::size_t(0),
+                                   pairs.size(),
+                                   evaluate_pairs,
+                                   64);
+      const unsigned int changes
+        = std::count(changed.begin(), changed.end(), 1);
       total_search_time += timer.wall_time();
 
       // Local systems [u (3), lambda (3), z (0 or 1)], residual
@@ -312,6 +332,19 @@ namespace deepdraw
             matrix->add(position_dof[k], position_dof[k], force_regularisation);
         }
       return changes;
+    }
+
+
+    void
+    ContactCoupling::add_open_multipliers(
+      std::vector<types::global_dof_index> &unknowns) const
+    {
+      // Open: P = 0 whatever lambda and du are, so dP/d(du, lambda, z) = 0
+      // and F_sup = lambda / r (doc/theory.md §7, D60).
+      for (const Pair &pair : pairs)
+        if (pair.result.state == contact::ContactState::open)
+          for (unsigned int c = 0; c < 3; ++c)
+            unknowns.push_back(pair.first_multiplier + c);
     }
 
 

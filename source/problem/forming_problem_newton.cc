@@ -31,6 +31,7 @@ namespace deepdraw
     {
       const types::global_dof_index n_u = dof_handler.n_dofs();
       prepare_increment(old_load, new_load);
+      linear_solver->reset_reduction();
       // Displacement increment 0; contact forces and tool positions start
       // from their converged values (the tangent predictor's start).
       const auto start_from_converged_state = [&]()
@@ -108,10 +109,24 @@ namespace deepdraw
       Timer timer;
       try
       {
+        // Rows and columns that hold only their diagonal: constrained dofs
+        // (distribute() sets them afterwards) and the multipliers of open
+        // pairs (D60).
+        std::vector<types::global_dof_index> decoupled;
+        if (linear_solver_parameters.leave_out_decoupled)
+        {
+          for (const auto &[dof, entry] : prescribed_dofs)
+            decoupled.push_back(dof);
+          decoupled.insert(decoupled.end(),
+                           constrained_multipliers.begin(),
+                           constrained_multipliers.end());
+          contact.add_open_multipliers(decoupled);
+        }
         linear_solver->solve(system_matrix,
                              system_rhs,
                              correction,
-                             contact.tool_position_unknowns());
+                             contact.tool_position_unknowns(),
+                             decoupled);
       }
       catch (const std::exception &error)
       {

@@ -129,7 +129,9 @@ namespace deepdraw
                             "linear_solve_s",
                             "output_s",
                             "wall_s",
-                            "sheet_volume_mm3"},
+                            "sheet_volume_mm3",
+                            "factorized_unknowns",
+                            "symbolic_analyses"},
                            resume);
       newton_file.open(directory + "/newton.csv",
                        {"increment",

@@ -273,23 +273,30 @@ namespace deepdraw
       const double contact_residual = contact_residual_history.empty()
                                         ? 0.
                                         : contact_residual_history.back();
-      statistics_file.add_row({double(state.increment_number),
-                               state.load,
-                               record.load_increment,
-                               double(record.iterations),
-                               double(record.cut_backs),
-                               force_residual,
-                               contact_residual,
-                               double(n_plastic_points),
-                               double(contact_changes),
-                               double(contact.n_stick()),
-                               double(contact.n_slip()),
-                               assembly_time,
-                               record.search_time,
-                               solve_time,
-                               record.output_time,
-                               record.wall_time,
-                               sheet_volume()});
+      const solver::LinearSolver::Statistics solver_statistics
+        = linear_solver->statistics();
+      statistics_file.add_row(
+        {double(state.increment_number),
+         state.load,
+         record.load_increment,
+         double(record.iterations),
+         double(record.cut_backs),
+         force_residual,
+         contact_residual,
+         double(n_plastic_points),
+         double(contact_changes),
+         double(contact.n_stick()),
+         double(contact.n_slip()),
+         assembly_time,
+         record.search_time,
+         solve_time,
+         record.output_time,
+         record.wall_time,
+         sheet_volume(),
+         double(solver_statistics.factorized_unknowns),
+         double(solver_statistics.symbolic_analyses
+                - reported_solver_statistics.symbolic_analyses)});
+      reported_solver_statistics = solver_statistics;
     }
 
 

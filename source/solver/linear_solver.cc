@@ -5,13 +5,12 @@
 #include <Epetra_Vector.h>
 #include <algorithm>
 #include <array>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deepdraw/solver/linear_solver.h>
+#include <deepdraw/solver/umfpack_factorization.h>
 #include <stdexcept>
-#include <umfpack.h>
 
 namespace deepdraw
 {
@@ -27,6 +26,14 @@ namespace deepdraw
                         "Direct solver of the Newton system: UMFPACK "
                         "(SuiteSparse, called directly), MUMPS or KLU "
                         "(through Trilinos Amesos).");
+      prm.declare_entry("Leave out decoupled unknowns",
+                        "true",
+                        Patterns::Bool(),
+                        "Factorise the Newton matrix without the unknowns "
+                        "whose row and column hold only the diagonal: the "
+                        "contact forces of open pairs and the constrained "
+                        "dofs (the same solution, a smaller system; "
+                        "doc/decisions.md D60).");
       prm.leave_subsection();
     }
 
@@ -35,193 +42,10 @@ namespace deepdraw
     LinearSolverParameters::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Linear solver");
-      type = prm.get("Type");
+      type                = prm.get("Type");
+      leave_out_decoupled = prm.get_bool("Leave out decoupled unknowns");
       prm.leave_subsection();
     }
-
-
-    namespace
-    {
-      // UMFPACK called directly so that the symbolic analysis (fill-reducing
-      // ordering) is kept while the pattern stays the same: Newton changes
-      // the values only, and contact state changes only zero entries of a
-      // fixed pattern. deal.II's SparseDirectUMFPACK redoes it every time.
-      // The CSR matrix is handed over as the CSC storage of its transpose
-      // and solved with UMFPACK_At.
-      class UmfpackFactorization
-      {
-      public:
-        ~UmfpackFactorization()
-        {
-          clear();
-        }
-
-        void
-        factorize(const SparseMatrix<double> &matrix)
-        {
-          const SparsityPattern &pattern = matrix.get_sparsity_pattern();
-          if (!has_pattern(pattern))
-          {
-            clear();
-            set_up_storage(pattern);
-          }
-          std::size_t k = 0;
-          for (types::global_dof_index i = 0; i < matrix.m(); ++i)
-            for (auto entry = matrix.begin(i); entry != matrix.end(i);
-                 ++entry, ++k)
-              values[position[k]] = entry->value();
-
-          if (numeric != nullptr)
-            umfpack_dl_free_numeric(&numeric);
-          if (symbolic != nullptr && numeric_factorization(true))
-            return;
-          // First factorisation of this pattern, or the kept ordering gave a
-          // singular or badly conditioned factorisation: analyse afresh.
-          if (symbolic != nullptr)
-            umfpack_dl_free_symbolic(&symbolic);
-          const SuiteSparse_long n      = row_start.size() - 1;
-          const int              status = umfpack_dl_symbolic(n,
-                                                 n,
-                                                 row_start.data(),
-                                                 column_index.data(),
-                                                 values.data(),
-                                                 &symbolic,
-                                                 control.data(),
-                                                 nullptr);
-          if (status != UMFPACK_OK || !numeric_factorization(false))
-            throw std::runtime_error("UMFPACK could not factorise the matrix "
-                                     "(status "
-                                     + std::to_string(status) + ")");
-        }
-
-        void
-        solve(const Vector<double> &rhs, Vector<double> &solution) const
-        {
-          solution.reinit(rhs.size());
-          // Iterative refinement only for a poorly conditioned matrix: it
-          // never took a step on the square cup but cost 8 ms per solve.
-          std::array<double, UMFPACK_CONTROL> solve_control = control;
-          solve_control[UMFPACK_IRSTEP] = reciprocal_condition < 1e-12 ? 2 : 0;
-          const int status              = umfpack_dl_solve(UMFPACK_At,
-                                              row_start.data(),
-                                              column_index.data(),
-                                              values.data(),
-                                              solution.data(),
-                                              rhs.data(),
-                                              numeric,
-                                              solve_control.data(),
-                                              nullptr);
-          if (status != UMFPACK_OK)
-            throw std::runtime_error("UMFPACK could not solve (status "
-                                     + std::to_string(status) + ")");
-        }
-
-      private:
-        // A pattern object may be rebuilt in place: compare the entries
-        // (cheap next to a factorisation).
-        bool
-        has_pattern(const SparsityPattern &pattern) const
-        {
-          if (symbolic == nullptr || pattern.n_rows() + 1 != row_start.size()
-              || pattern.n_nonzero_elements() != column_index.size())
-            return false;
-          std::size_t k = 0;
-          for (types::global_dof_index i = 0; i < pattern.n_rows(); ++i)
-            for (auto entry = pattern.begin(i); entry != pattern.end(i);
-                 ++entry, ++k)
-              if (static_cast<types::global_dof_index>(
-                    column_index[position[k]])
-                  != entry->column())
-                return false;
-          return true;
-        }
-
-        void
-        set_up_storage(const SparsityPattern &pattern)
-        {
-          const types::global_dof_index n = pattern.n_rows();
-          row_start.assign(n + 1, 0);
-          column_index.resize(pattern.n_nonzero_elements());
-          values.resize(pattern.n_nonzero_elements());
-          position.resize(pattern.n_nonzero_elements());
-          // deal.II stores the diagonal first in each row; UMFPACK wants
-          // sorted indices.
-          std::vector<std::pair<types::global_dof_index, std::size_t>> row;
-          std::size_t                                                  k = 0;
-          for (types::global_dof_index i = 0; i < n; ++i)
-          {
-            row.clear();
-            for (auto entry = pattern.begin(i); entry != pattern.end(i);
-                 ++entry, ++k)
-              row.emplace_back(entry->column(), k);
-            std::sort(row.begin(), row.end());
-            row_start[i + 1] = row_start[i] + row.size();
-            for (std::size_t j = 0; j < row.size(); ++j)
-            {
-              column_index[row_start[i] + j] = row[j].first;
-              position[row[j].second]        = row_start[i] + j;
-            }
-          }
-        }
-
-        // False if the factorisation is singular or, with a kept ordering
-        // (check_condition), its reciprocal condition estimate is below
-        // 1e-14: then the ordering is redone. A fresh ordering is accepted
-        // as UMFPACK gives it, as deal.II's SparseDirectUMFPACK does.
-        bool
-        numeric_factorization(const bool check_condition)
-        {
-          double    info[UMFPACK_INFO];
-          const int status     = umfpack_dl_numeric(row_start.data(),
-                                                column_index.data(),
-                                                values.data(),
-                                                symbolic,
-                                                &numeric,
-                                                control.data(),
-                                                info);
-          reciprocal_condition = info[UMFPACK_RCOND];
-          const bool good
-            = status == UMFPACK_OK
-              && (!check_condition || info[UMFPACK_RCOND] > 1e-14);
-          if (!good && numeric != nullptr)
-            umfpack_dl_free_numeric(&numeric);
-          return good;
-        }
-
-        void
-        clear()
-        {
-          if (numeric != nullptr)
-            umfpack_dl_free_numeric(&numeric);
-          if (symbolic != nullptr)
-            umfpack_dl_free_symbolic(&symbolic);
-        }
-
-        // Measured on square-cup Newton matrices (D35): the symmetric
-        // strategy with AMD; a diagonal pivot is accepted only if it is at
-        // least 0.1 of its column's largest entry (the default 0.001 took
-        // near-zero multiplier diagonals and lost all accuracy).
-        static std::array<double, UMFPACK_CONTROL>
-        make_control()
-        {
-          std::array<double, UMFPACK_CONTROL> control;
-          umfpack_dl_defaults(control.data());
-          control[UMFPACK_STRATEGY]            = UMFPACK_STRATEGY_SYMMETRIC;
-          control[UMFPACK_ORDERING]            = UMFPACK_ORDERING_AMD;
-          control[UMFPACK_SYM_PIVOT_TOLERANCE] = 0.1;
-          return control;
-        }
-
-        const std::array<double, UMFPACK_CONTROL> control = make_control();
-        double                                    reciprocal_condition = 1.;
-        void                                     *symbolic = nullptr;
-        void                                     *numeric  = nullptr;
-        std::vector<SuiteSparse_long>             row_start, column_index;
-        std::vector<double>                       values;
-        // Storage position of the k-th entry of the deal.II matrix.
-        std::vector<std::size_t> position;
-      };
-    } // namespace
 
 
     struct LinearSolver::Implementation
@@ -240,14 +64,44 @@ namespace deepdraw
       std::unique_ptr<Epetra_LinearProblem> epetra_problem;
       std::unique_ptr<Amesos_BaseSolver>    amesos;
 
-      // The matrix without the bordered unknowns: its pattern is rebuilt
-      // only when the full pattern or the bordered set changes.
+      // The reduced matrix M: without the bordered unknowns and the
+      // decoupled unknowns left out (role). Its pattern is rebuilt only
+      // when the full pattern or the bordered set changes, or an unknown
+      // left out is no longer decoupled (see LinearSolver::solve).
+      enum Role : unsigned char
+      {
+        kept,
+        bordered,
+        left_out
+      };
+      // Rebuilds role, reduced_index and the reduced pattern if needed.
+      void
+      update_reduction(const SparsityPattern                      &pattern,
+                       const std::vector<types::global_dof_index> &bordered,
+                       const std::vector<types::global_dof_index> &decoupled);
+      void
+      build_reduction(const SparsityPattern                      &pattern,
+                      const std::vector<types::global_dof_index> &bordered);
+      // Copies the matrix into reduced_matrix and the border blocks; false
+      // (and the offending unknowns kept from now on) if an unknown left
+      // out has a nonzero off-diagonal entry.
+      bool
+      copy_reduced(const SparseMatrix<double> &matrix);
+
       const SparsityPattern               *full_pattern  = nullptr;
       std::size_t                          full_nonzeros = 0;
       std::vector<types::global_dof_index> bordered_of_pattern;
+      std::vector<Role>                    role;
+      std::vector<bool>                    is_decoupled;
       std::vector<types::global_dof_index> reduced_index;
+      std::vector<int>                     border_position;
       SparsityPattern                      reduced_pattern;
       SparseMatrix<double>                 reduced_matrix;
+      // A = [M C; D E] in the bordered unknowns b (columns of C, rows of D).
+      std::vector<Vector<double>> border_columns, border_rows;
+      FullMatrix<double>          corner;
+      LinearSolver::Statistics    statistics;
+      bool                        reduction_reset = false;
     };
 
 
@@ -320,6 +174,163 @@ namespace deepdraw
     }
 
 
+    namespace
+    {
+      // The reduced pattern is also rebuilt, to shrink the factorised
+      // matrix, when more than this fraction of the unknowns it keeps has
+      // become decoupled (contact pairs that opened).
+      constexpr double shrink_fraction = 0.25;
+    } // namespace
+
+
+    void
+    LinearSolver::Implementation::update_reduction(
+      const SparsityPattern                      &pattern,
+      const std::vector<types::global_dof_index> &bordered,
+      const std::vector<types::global_dof_index> &decoupled)
+    {
+      const types::global_dof_index n = pattern.n_rows();
+      is_decoupled.assign(n, false);
+      for (const auto i : decoupled)
+        is_decoupled[i] = true;
+      bool rebuild = full_pattern != &pattern
+                     || full_nonzeros != pattern.n_nonzero_elements()
+                     || bordered_of_pattern != bordered || role.size() != n
+                     || reduction_reset;
+      reduction_reset                = false;
+      types::global_dof_index n_kept = 0, n_kept_decoupled = 0;
+      for (types::global_dof_index i = 0; i < n && !rebuild; ++i)
+        if (role[i] == left_out && !is_decoupled[i])
+          rebuild = true;
+        else if (role[i] == kept)
+        {
+          ++n_kept;
+          n_kept_decoupled += is_decoupled[i];
+        }
+      if (rebuild || n_kept_decoupled > shrink_fraction * n_kept)
+      {
+        full_pattern        = &pattern;
+        full_nonzeros       = pattern.n_nonzero_elements();
+        bordered_of_pattern = bordered;
+        build_reduction(pattern, bordered);
+      }
+    }
+
+
+    void
+    LinearSolver::Implementation::build_reduction(
+      const SparsityPattern                      &pattern,
+      const std::vector<types::global_dof_index> &bordered)
+    {
+      const types::global_dof_index n = pattern.n_rows();
+      role.assign(n, kept);
+      for (types::global_dof_index i = 0; i < n; ++i)
+        if (is_decoupled[i])
+          role[i] = left_out;
+      border_position.assign(n, -1);
+      for (unsigned int k = 0; k < bordered.size(); ++k)
+      {
+        role[bordered[k]]            = Role::bordered;
+        border_position[bordered[k]] = k;
+      }
+      reduced_index.assign(n, numbers::invalid_dof_index);
+      types::global_dof_index n_m = 0;
+      for (types::global_dof_index i = 0; i < n; ++i)
+        if (role[i] == kept)
+          reduced_index[i] = n_m++;
+
+      std::vector<unsigned int> row_lengths(n_m, 0);
+      for (types::global_dof_index i = 0; i < n; ++i)
+        if (role[i] == kept)
+          for (auto entry = pattern.begin(i); entry != pattern.end(i); ++entry)
+            row_lengths[reduced_index[i]] += role[entry->column()] == kept;
+      reduced_pattern.reinit(n_m, n_m, row_lengths);
+      std::vector<types::global_dof_index> columns;
+      for (types::global_dof_index i = 0; i < n; ++i)
+        if (role[i] == kept)
+        {
+          columns.clear();
+          for (auto entry = pattern.begin(i); entry != pattern.end(i); ++entry)
+            if (role[entry->column()] == kept)
+              columns.push_back(reduced_index[entry->column()]);
+          std::sort(columns.begin(), columns.end());
+          reduced_pattern.add_entries(reduced_index[i],
+                                      columns.begin(),
+                                      columns.end(),
+                                      true);
+        }
+      reduced_pattern.compress();
+      reduced_matrix.reinit(reduced_pattern);
+      ++statistics.reductions;
+    }
+
+
+    bool
+    LinearSolver::Implementation::copy_reduced(
+      const SparseMatrix<double> &matrix)
+    {
+      const types::global_dof_index n   = matrix.m();
+      const types::global_dof_index n_m = reduced_pattern.n_rows();
+      const unsigned int            n_b = bordered_of_pattern.size();
+      border_columns.assign(n_b, Vector<double>(n_m));
+      border_rows.assign(n_b, Vector<double>(n_m));
+      corner.reinit(n_b, n_b);
+      std::vector<types::global_dof_index> coupled;
+      // The reduced rows keep the order of the full rows (diagonal first,
+      // then ascending columns, and the renumbering is monotone): copy in
+      // step instead of searching each entry.
+      for (types::global_dof_index i = 0; i < n; ++i)
+      {
+        const Role role_i = role[i];
+        if (role_i == left_out)
+        {
+          for (auto entry = matrix.begin(i); entry != matrix.end(i); ++entry)
+            if (entry->column() != i && entry->value() != 0.)
+            {
+              coupled.push_back(i);
+              break;
+            }
+          continue;
+        }
+        const int bi            = border_position[i];
+        auto      reduced_entry = role_i == kept
+                                    ? reduced_matrix.begin(reduced_index[i])
+                                    : reduced_matrix.end();
+        for (auto entry = matrix.begin(i); entry != matrix.end(i); ++entry)
+        {
+          const auto   j      = entry->column();
+          const double value  = entry->value();
+          const Role   role_j = role[j];
+          if (role_j == left_out)
+          {
+            if (value != 0.)
+              coupled.push_back(j);
+          }
+          else if (role_i == kept && role_j == kept)
+          {
+            AssertThrow(reduced_entry->column() == reduced_index[j],
+                        ExcInternalError());
+            reduced_entry->value() = value;
+            ++reduced_entry;
+          }
+          else if (role_i == kept)
+            border_columns[border_position[j]][reduced_index[i]] = value;
+          else if (role_j == kept)
+            border_rows[bi][reduced_index[j]] = value;
+          else
+            corner(bi, border_position[j]) = value;
+        }
+      }
+      if (coupled.empty())
+        return true;
+      // Not decoupled after all: keep these from now on.
+      for (const auto j : coupled)
+        is_decoupled[j] = false;
+      build_reduction(*full_pattern, bordered_of_pattern);
+      return false;
+    }
+
+
     LinearSolver::LinearSolver(const LinearSolverParameters &parameters)
         : parameters(parameters)
         , implementation(std::make_unique<Implementation>())
@@ -331,116 +342,93 @@ namespace deepdraw
 
 
     void
+    LinearSolver::reset_reduction()
+    {
+      implementation->reduction_reset = true;
+    }
+
+
+    const LinearSolver::Statistics &
+    LinearSolver::statistics() const
+    {
+      implementation->statistics.symbolic_analyses
+        = implementation->umfpack.n_symbolic_analyses();
+      return implementation->statistics;
+    }
+
+
+    void
     LinearSolver::solve(const SparseMatrix<double>                 &matrix,
                         const Vector<double>                       &rhs,
                         Vector<double>                             &solution,
-                        const std::vector<types::global_dof_index> &bordered)
+                        const std::vector<types::global_dof_index> &bordered,
+                        const std::vector<types::global_dof_index> &decoupled)
     {
+      Implementation               &data = *implementation;
+      const types::global_dof_index n    = matrix.m();
+      ++data.statistics.factorizations;
+      data.statistics.unknowns = n;
       try
       {
-        if (bordered.empty())
+        if (bordered.empty() && decoupled.empty())
         {
-          implementation->factorize(parameters.type, matrix);
-          implementation->back_substitute(rhs, solution);
+          data.statistics.factorized_unknowns = n;
+          data.factorize(parameters.type, matrix);
+          ++data.statistics.numeric_factorizations;
+          data.back_substitute(rhs, solution);
           return;
         }
 
-        Implementation               &data    = *implementation;
-        const SparsityPattern        &pattern = matrix.get_sparsity_pattern();
-        const types::global_dof_index n       = matrix.m();
-        const unsigned int            n_b     = bordered.size();
-        if (data.full_pattern != &pattern
-            || data.full_nonzeros != pattern.n_nonzero_elements()
-            || data.bordered_of_pattern != bordered)
+        data.update_reduction(matrix.get_sparsity_pattern(),
+                              bordered,
+                              decoupled);
+        while (!data.copy_reduced(matrix))
         {
-          data.full_pattern        = &pattern;
-          data.full_nonzeros       = pattern.n_nonzero_elements();
-          data.bordered_of_pattern = bordered;
-          data.reduced_index.assign(n, 0);
-          for (const auto dof : bordered)
-            data.reduced_index[dof] = numbers::invalid_dof_index;
-          types::global_dof_index next = 0;
-          for (auto &index : data.reduced_index)
-            if (index != numbers::invalid_dof_index)
-              index = next++;
-          DynamicSparsityPattern dsp(next, next);
-          for (types::global_dof_index i = 0; i < n; ++i)
-            if (data.reduced_index[i] != numbers::invalid_dof_index)
-              for (auto entry = pattern.begin(i); entry != pattern.end(i);
-                   ++entry)
-                if (data.reduced_index[entry->column()]
-                    != numbers::invalid_dof_index)
-                  dsp.add(data.reduced_index[i],
-                          data.reduced_index[entry->column()]);
-          data.reduced_pattern.copy_from(dsp);
-          data.reduced_matrix.reinit(data.reduced_pattern);
         }
-
-        // A = [M C; D E] in the bordered unknowns b (columns of C, rows of
-        // D) and the rest.
-        const types::global_dof_index n_m = data.reduced_pattern.n_rows();
-        std::vector<Vector<double>>   columns(n_b, Vector<double>(n_m));
-        std::vector<Vector<double>>   rows(n_b, Vector<double>(n_m));
-        FullMatrix<double>            corner(n_b, n_b);
-        std::vector<int>              border_position(n, -1);
-        for (unsigned int k = 0; k < n_b; ++k)
-          border_position[bordered[k]] = k;
-        // The reduced rows keep the order of the full rows (diagonal first,
-        // then ascending columns, and the renumbering is monotone): copy in
-        // step instead of searching each entry.
-        for (types::global_dof_index i = 0; i < n; ++i)
-        {
-          const int bi = border_position[i];
-          auto      reduced_entry
-            = bi < 0 ? data.reduced_matrix.begin(data.reduced_index[i])
-                     : data.reduced_matrix.end();
-          for (auto entry = matrix.begin(i); entry != matrix.end(i); ++entry)
-          {
-            const auto   j     = entry->column();
-            const double value = entry->value();
-            const int    bj    = border_position[j];
-            if (bi < 0 && bj < 0)
-            {
-              AssertThrow(reduced_entry->column() == data.reduced_index[j],
-                          ExcInternalError());
-              reduced_entry->value() = value;
-              ++reduced_entry;
-            }
-            else if (bi < 0)
-              columns[bj][data.reduced_index[i]] = value;
-            else if (bj < 0)
-              rows[bi][data.reduced_index[j]] = value;
-            else
-              corner(bi, bj) = value;
-          }
-        }
-
+        const types::global_dof_index n_m   = data.reduced_pattern.n_rows();
+        const unsigned int            n_b   = bordered.size();
+        data.statistics.factorized_unknowns = n_m;
         data.factorize(parameters.type, data.reduced_matrix);
-        Vector<double> reduced_rhs(n_m), y(n_m);
+        ++data.statistics.numeric_factorizations;
+        Vector<double> reduced_rhs(n_m), y(n_m), z(n_b);
         for (types::global_dof_index i = 0; i < n; ++i)
-          if (border_position[i] < 0)
+          if (data.role[i] == Implementation::kept)
             reduced_rhs[data.reduced_index[i]] = rhs[i];
         data.back_substitute(reduced_rhs, y);
         // S = E - D M^-1 C, z = S^-1 (f_b - D M^-1 f), x = M^-1 f - M^-1 C z.
-        std::vector<Vector<double>> inverse_columns(n_b);
-        FullMatrix<double>          schur(corner);
-        Vector<double>              border_rhs(n_b), z(n_b);
-        for (unsigned int k = 0; k < n_b; ++k)
+        if (n_b > 0)
         {
-          data.back_substitute(columns[k], inverse_columns[k]);
-          border_rhs[k] = rhs[bordered[k]] - rows[k] * y;
+          std::vector<Vector<double>> inverse_columns(n_b);
+          FullMatrix<double>          schur(data.corner);
+          Vector<double>              border_rhs(n_b);
+          for (unsigned int k = 0; k < n_b; ++k)
+          {
+            data.back_substitute(data.border_columns[k], inverse_columns[k]);
+            border_rhs[k] = rhs[bordered[k]] - data.border_rows[k] * y;
+          }
+          for (unsigned int k = 0; k < n_b; ++k)
+            for (unsigned int l = 0; l < n_b; ++l)
+              schur(k, l) -= data.border_rows[k] * inverse_columns[l];
+          schur.gauss_jordan();
+          schur.vmult(z, border_rhs);
+          for (unsigned int k = 0; k < n_b; ++k)
+            y.add(-z[k], inverse_columns[k]);
         }
-        for (unsigned int k = 0; k < n_b; ++k)
-          for (unsigned int l = 0; l < n_b; ++l)
-            schur(k, l) -= rows[k] * inverse_columns[l];
-        schur.gauss_jordan();
-        schur.vmult(z, border_rhs);
-        for (unsigned int k = 0; k < n_b; ++k)
-          y.add(-z[k], inverse_columns[k]);
+        // A decoupled unknown's row is its diagonal alone.
         solution.reinit(n);
         for (types::global_dof_index i = 0; i < n; ++i)
-          solution[i] = border_position[i] < 0 ? y[data.reduced_index[i]]
-                                               : z[border_position[i]];
+          switch (data.role[i])
+          {
+            case Implementation::kept:
+              solution[i] = y[data.reduced_index[i]];
+              break;
+            case Implementation::bordered:
+              solution[i] = z[data.border_position[i]];
+              break;
+            case Implementation::left_out:
+              solution[i] = rhs[i] / matrix.diag_element(i);
+              break;
+          }
       }
       catch (const std::exception &error)
       {

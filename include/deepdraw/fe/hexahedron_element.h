@@ -81,9 +81,10 @@ namespace deepdraw
                unsigned int                 &plastic_points) const;
 
     private:
-      // One pass over the Gauss points at fixed alpha: residual (n) and,
-      // if wanted, the uncondensed matrix (n x n, row-major), n = 24 +
-      // n_enhanced.
+      // One pass over the Gauss points at fixed alpha: residual (n = 24 +
+      // n_enhanced) and, if tangents != nullptr, the material tangents
+      // dP/dH of the 8 points times their weights (the matrix is built from
+      // them by tangent_matrix, once the local Newton of alpha needs it).
       ElementStatus
       integrate(const CellGeometry           &geometry,
                 const double                 *du,
@@ -91,8 +92,16 @@ namespace deepdraw
                 const QuadraturePointHistory *old_history,
                 QuadraturePointHistory       *trial_history,
                 double                       *residual,
-                double                       *matrix,
+                Tensor<4, 3>                 *tangents,
                 unsigned int                 &plastic_points) const;
+      // K_ij = sum_q G_i : (w dP/dH)_q : G_j for i, j in [first, n) into
+      // the n x n row-major matrix (the other entries untouched): first = 24
+      // gives K_aa for the local Newton, 0 the whole matrix.
+      void
+      tangent_matrix(const CellGeometry &geometry,
+                     const Tensor<4, 3> *tangents,
+                     unsigned int        first,
+                     double             *matrix) const;
 
       ElementParameters               parameters;
       const material::HillPlasticity &material;

@@ -149,6 +149,13 @@ namespace deepdraw
                double                           new_load,
                bool                             predictor = false);
 
+      // Appends the multiplier unknowns of the pairs open after the last
+      // assemble(): their rows and columns hold only the diagonal 1/r (the
+      // linear solver leaves them out, D60).
+      void
+      add_open_multipliers(
+        std::vector<types::global_dof_index> &unknowns) const;
+
       // sqrt(sum |r F_sup|^2 + sum (holder residual)^2): a force (N).
       double
       residual_norm(const Vector<double> &rhs) const;
@@ -247,6 +254,14 @@ namespace deepdraw
         // Open at the last converged state (see assemble(), predictor).
         bool open_at_start = false;
       };
+
+      // Projection of the pair's node at `solution` and its contact law
+      // (pair.result); true if its state changed.
+      bool
+      evaluate_pair(Pair                        &pair,
+                    const std::vector<Point<3>> &positions,
+                    const Vector<double>        &solution,
+                    bool                         predictor) const;
 
       contact::ContactParameters parameters;
       double                     search_distance = 2.;

@@ -339,6 +339,8 @@ namespace deepdraw
 
 
       std::unique_ptr<solver::LinearSolver> linear_solver;
+      // The solver's counts when the last statistics row was written.
+      solver::LinearSolver::Statistics reported_solver_statistics;
 
       // Results
       std::vector<double> column_thickness;

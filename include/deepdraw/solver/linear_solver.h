@@ -18,6 +18,9 @@ namespace deepdraw
     struct LinearSolverParameters
     {
       std::string type = "UMFPACK";
+      // Unknowns with a diagonal row and column (open contact pairs,
+      // constrained dofs) are left out of the factorisation (D60).
+      bool leave_out_decoupled = true;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -38,12 +41,45 @@ namespace deepdraw
       // They are split off, A = [M C; D E], and eliminated by the Schur
       // complement S = E - D M^-1 C: the sparse factorisation then only
       // sees M, whose fill-in a dense row would otherwise ruin (a 10x
-      // slower factorisation on the square cup).
+      // slower factorisation on the square cup, D23).
+      //
+      // `decoupled` lists unknowns whose row and column hold nothing but
+      // the diagonal entry (the multipliers of open contact pairs, the
+      // constrained dofs): their solution is rhs_i / A_ii, and M leaves
+      // them out (D60). The pattern of M, and with it the ordering of the
+      // factorisation, is kept while every unknown it leaves out is still
+      // decoupled, and rebuilt when one is not or when a quarter of the
+      // unknowns it keeps have become decoupled. An unknown listed but
+      // found coupled (a nonzero off-diagonal entry) is kept in M: the
+      // solution stays exact either way.
       void
       solve(const SparseMatrix<double>                 &matrix,
             const Vector<double>                       &rhs,
             Vector<double>                             &solution,
-            const std::vector<types::global_dof_index> &bordered = {});
+            const std::vector<types::global_dof_index> &bordered  = {},
+            const std::vector<types::global_dof_index> &decoupled = {});
+
+      // The next solve leaves out exactly the decoupled unknowns it is
+      // given, whatever the last one did: called at the start of each
+      // increment, so that the systems of an increment, and with them its
+      // results, depend only on the state it starts from (a resumed run
+      // repeats the same arithmetic, D55).
+      void
+      reset_reduction();
+
+      // Counts since construction, and the sizes of the last solve.
+      struct Statistics
+      {
+        types::global_dof_index unknowns            = 0;
+        types::global_dof_index factorized_unknowns = 0;
+        unsigned int            factorizations      = 0;
+        // Patterns of the reduced matrix built, orderings computed.
+        unsigned int reductions             = 0;
+        unsigned int symbolic_analyses      = 0;
+        unsigned int numeric_factorizations = 0;
+      };
+      const Statistics &
+      statistics() const;
 
     private:
       struct Implementation;
