@@ -9,12 +9,11 @@
 // run by scripts/fuzz.sh, not by ctest; run it in a directory with the
 // links prm/ and data/ (the script makes them) so that seeds can include
 // the shipped prm files and use the tests' tool files.
+#include <cstdint>
+#include <cstdlib>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
-
-#include <cstdint>
-#include <cstdlib>
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/io/parameter_file.h>
 #include <deepdraw/problem/forming_problem.h>

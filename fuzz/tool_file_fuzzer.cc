@@ -1,6 +1,7 @@
 // libFuzzer target: the tool-file reader (doc/tool_files.md) on arbitrary
 // bytes. An input must either be rejected with deepdraw::InputError or give
-// a tool whose closest-point projections are finite; any other exception, a
+// a tool whose closest-point projections are finite (gap, foot, normal,
+// curvature: what the contact pairs use); any other exception, a
 // sanitizer report or a non-finite projection is a bug (abort). Built and
 // run by scripts/fuzz.sh, not by ctest.
 #include <cmath>
@@ -40,7 +41,7 @@ LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size)
       = deepdraw::geometry::read_tool_file(path);
     // Points around the first control point and far away, as the contact
     // search would project sheet nodes.
-    const dealii::Point<3> first = tool.patch(0).control_points()[0];
+    const dealii::Point<3> first    = tool.patch(0).control_points()[0];
     const dealii::Point<3> points[] = {first + dealii::Point<3>(0., 0., 1.),
                                        first + dealii::Point<3>(-3., 2., -1.),
                                        dealii::Point<3>(0., 0., 0.),
@@ -50,7 +51,8 @@ LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size)
       deepdraw::geometry::ProjectionResult result;
       if (tool.project(x, result, 1e7)
           && !(std::isfinite(result.gap) && std::isfinite(result.distance)
-               && finite(result.foot)))
+               && finite(result.foot) && finite(dealii::Point<3>(result.normal))
+               && std::isfinite(result.curvature.norm())))
       {
         std::cerr << "fuzz: non-finite projection of (" << x
                   << ") onto an accepted tool\n";

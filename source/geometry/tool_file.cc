@@ -103,12 +103,13 @@ namespace deepdraw::geometry
 
     // Why a patch cannot be used, or "" (doc/tool_files.md, "Errors"): its
     // control points span no extent; or, on an (N + 1) x (N + 1) grid of
-    // (u, v) with N = 2 max(p, q) + 6, x_u x x_v vanishes at an interior
-    // point (no normal there), or turns by more than 90 degrees between
-    // neighbouring points (the patch folds over: the normal flips across a
-    // line where it is undefined, and a projection landing there gives NaN;
-    // found by fuzz/tool_file_fuzzer.cc). Collapsed edges (x_u x x_v = 0 on
-    // an edge, the pole of a sphere) are allowed.
+    // (u, v) with N = 2 max(p, q) + 6, edges and corners included, x_u x x_v
+    // vanishes at a point (no normal there: a line, a collapsed edge or
+    // corner) or turns by more than 90 degrees between neighbouring points
+    // (the patch folds over: the normal flips across a line where it is
+    // undefined). A sheet node projected onto such a point would get a NaN
+    // gap; a node far away is projected onto a corner. Both were found by
+    // fuzz/tool_file_fuzzer.cc.
     std::string
     degenerate_patch(const BezierPatch &patch)
     {
@@ -130,25 +131,33 @@ namespace deepdraw::geometry
         text << "(u, v) = (" << double(i) / n << ", " << double(j) / n << ")";
         return text.str();
       };
+      std::vector<double> area((n + 1) * (n + 1));
       for (unsigned int j = 0; j <= n; ++j)
         for (unsigned int i = 0; i <= n; ++i)
         {
           const SurfacePoint x
             = patch.derivatives(double(i) / n, double(j) / n);
-          dealii::Tensor<1, 3> c = dealii::cross_product_3d(x.x_u, x.x_v);
-          const bool           interior = i > 0 && i < n && j > 0 && j < n;
-          if (!(c.norm() > tiny))
-          {
-            if (interior || !std::isfinite(c.norm()))
+          normal[i + (n + 1) * j] = dealii::cross_product_3d(x.x_u, x.x_v);
+          area[i + (n + 1) * j]   = normal[i + (n + 1) * j].norm();
+        }
+      // Interior points first: a patch on a line has no normal anywhere, and
+      // is better described so than by its first corner.
+      for (const bool interior : {true, false})
+        for (unsigned int j = 0; j <= n; ++j)
+          for (unsigned int i = 0; i <= n; ++i)
+            if ((i > 0 && i < n && j > 0 && j < n) == interior
+                && !(area[i + (n + 1) * j] > tiny))
               return "x_u x x_v = 0 at " + at(i, j)
-                     + ", so it has no normal there (its control points lie "
-                       "on one line, or the net folds onto itself)";
-            c = 0; // a collapsed edge
-          }
-          else
-            c /= c.norm();
-          normal[i + (n + 1) * j] = c;
-          // 0 on a collapsed edge: not compared.
+                     + (interior
+                          ? ", so it has no normal there (its control points "
+                            "lie on one line, or the net folds onto itself)"
+                          : ", a collapsed edge or corner without a normal, "
+                            "where a sheet node can be projected; split the "
+                            "patch so that no edge or corner collapses");
+      for (unsigned int j = 0; j <= n; ++j)
+        for (unsigned int i = 0; i <= n; ++i)
+        {
+          const dealii::Tensor<1, 3> &c = normal[i + (n + 1) * j];
           const bool flips_u = i > 0 && c * normal[i - 1 + (n + 1) * j] < 0.;
           const bool flips_v = j > 0 && c * normal[i + (n + 1) * (j - 1)] < 0.;
           if (flips_u || flips_v)

@@ -170,8 +170,8 @@ namespace deepdraw
           for (const double xa : along_a)
             for (const double xb : along_b)
             {
-              X[a]               = xa;
-              X[b]               = xb;
+              X[a] = xa;
+              X[b] = xb;
               // Evaluated directly: value() reports a run-time failure.
               entry.function->set_time(load);
               const double value = entry.function->value(X);

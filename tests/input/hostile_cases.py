@@ -359,6 +359,10 @@ def tool_file_cases(source):
                    "2 1"),
              "is degenerate: its normal x_u x x_v flips between",
              "the patch folds over onto itself"),
+        tool("degenerate_collapsed_corner",
+             patch("0 0 0 1\n1 0 0 1\n0 1 0 1\n0 1 0 1\n"),
+             "is degenerate: x_u x x_v = 0 at (u, v) = (0, 1), a collapsed "
+             "edge or corner"),
         tool("degenerate_tiny", patch(square.replace("1 ", "1e-12 ")),
              "is degenerate: all its control points are equal"),
         tool("binary", bytes(range(256)), "die.tool:1: not a text file"),
