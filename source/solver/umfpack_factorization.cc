@@ -104,6 +104,13 @@ namespace deepdraw
     }
 
 
+    void
+    UmfpackFactorization::forget_analysis()
+    {
+      clear();
+    }
+
+
     unsigned int
     UmfpackFactorization::n_symbolic_analyses() const
     {

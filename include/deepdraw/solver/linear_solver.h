@@ -19,8 +19,9 @@ namespace deepdraw
     {
       std::string type = "UMFPACK";
       // Unknowns with a diagonal row and column (open contact pairs,
-      // constrained dofs) are left out of the factorisation (D60).
-      bool leave_out_decoupled = true;
+      // constrained dofs) may be left out of the factorisation (D60); off
+      // by default, it was slower (D64).
+      bool leave_out_decoupled = false;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -59,11 +60,12 @@ namespace deepdraw
             const std::vector<types::global_dof_index> &bordered  = {},
             const std::vector<types::global_dof_index> &decoupled = {});
 
-      // The next solve leaves out exactly the decoupled unknowns it is
-      // given, whatever the last one did: called at the start of each
-      // increment, so that the systems of an increment, and with them its
-      // results, depend only on the state it starts from (a resumed run
-      // repeats the same arithmetic, D55).
+      // The next solve starts afresh: it leaves out exactly the decoupled
+      // unknowns it is given and analyses the pattern anew (ordering),
+      // whatever the last one did. Called at the start of each increment,
+      // so that the systems of an increment, and with them its results,
+      // depend only on the state it starts from (a resumed run repeats the
+      // same arithmetic, D55, D64).
       void
       reset_reduction();
 

@@ -35,6 +35,9 @@ namespace deepdraw
       // Solves with the last factorisation.
       void
       solve(const Vector<double> &rhs, Vector<double> &solution) const;
+      // The next factorize() analyses the pattern anew.
+      void
+      forget_analysis();
       // Symbolic analyses (orderings) done so far.
       unsigned int
       n_symbolic_analyses() const;
