@@ -1,3 +1,5 @@
+#include <algorithm>
+#include <cmath>
 #include <deal.II/base/utilities.h>
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/problem/adaptivity_parameters.h>
@@ -21,9 +23,17 @@ namespace deepdraw
         {
           values.clear();
         }
-        if (values.size() != 3)
+        // Finite and within the range of any length of the model (D50).
+        const bool finite
+          = values.size() == 3
+            && std::all_of(values.begin(),
+                           values.end(),
+                           [](const double x)
+                           { return std::isfinite(x) && std::abs(x) <= 1e6; });
+        if (!finite)
           throw InputError("Adaptivity/" + parameter
-                           + ": three coordinates x, y, z (mm) expected, got '"
+                           + ": three finite coordinates x, y, z (mm, at most "
+                             "1e6 in magnitude) expected, got '"
                            + text + "'");
         return Point<3>(values[0], values[1], values[2]);
       }
@@ -69,10 +79,10 @@ namespace deepdraw
                         "minimum..Region maximum (doc/theory.md §8.1).");
       prm.declare_entry("Jump threshold",
                         "0.02",
-                        Patterns::Double(0.),
+                        Patterns::Double(0., 10.),
                         "Indicator = plastic strain jump: the jump of the "
                         "equivalent plastic strain between neighbouring "
-                        "cells above which both are refined.");
+                        "cells above which both are refined (0 to 10).");
       prm.declare_entry("Region minimum",
                         "0, 0, 0",
                         Patterns::Anything(),

@@ -70,6 +70,9 @@ namespace deepdraw
         = residual_history.empty() ? 0. : residual_history.back();
       record.wall_time = timer.wall_time();
       refinement_history.push_back(record);
+      // The re-equilibration's orderings belong to no increment's row of
+      // statistics.csv (a run resumed after it must count the same).
+      reported_solver_statistics = linear_solver->statistics();
       adaptivity_file.add_row(
         {double(record.cycle),
          double(record.increment),

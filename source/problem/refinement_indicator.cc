@@ -76,19 +76,33 @@ namespace deepdraw
                          return indicator[a->active_cell_index()]
                                 > indicator[b->active_cell_index()];
                        });
+      // deal.II's closure (at most one hanging node per edge, and the
+      // neighbours an anisotropic refinement needs) adds flags: the cell
+      // limit is checked on the closed flags, dropping the lowest-ranked
+      // candidates until it holds.
       const RefinementCase<3> refinement = parameters.refinement_case();
-      const unsigned int added   = GeometryInfo<3>::n_children(refinement) - 1;
-      std::size_t        n_cells = mesh.n_active_cells();
-      unsigned int       flagged = 0;
-      for (const auto &cell : candidates)
+      std::size_t             n_flagged  = candidates.size();
+      while (n_flagged > 0)
       {
-        if (n_cells + added > parameters.maximum_cells)
+        for (const auto &cell : mesh.active_cell_iterators())
+          cell->clear_refine_flag();
+        for (std::size_t c = 0; c < n_flagged; ++c)
+          candidates[c]->set_refine_flag(refinement);
+        mesh.prepare_coarsening_and_refinement();
+        std::size_t n_cells = mesh.n_active_cells();
+        for (const auto &cell : mesh.active_cell_iterators())
+          if (cell->refine_flag_set())
+            n_cells += GeometryInfo<3>::n_children(
+                         RefinementCase<3>(cell->refine_flag_set()))
+                       - 1;
+        if (n_cells <= parameters.maximum_cells)
           break;
-        cell->set_refine_flag(refinement);
-        n_cells += added;
-        ++flagged;
+        n_flagged = std::min(n_flagged - 1, n_flagged * 9 / 10);
       }
-      return flagged;
+      if (n_flagged == 0)
+        for (const auto &cell : mesh.active_cell_iterators())
+          cell->clear_refine_flag();
+      return n_flagged;
     }
   } // namespace problem
 } // namespace deepdraw

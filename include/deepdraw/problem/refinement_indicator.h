@@ -32,8 +32,10 @@ namespace deepdraw
 
     // Sets the refine flag (parameters.refinement_case()) of the cells whose
     // indicator exceeds threshold and whose level is below the maximum,
-    // largest indicator first, as long as the refined mesh keeps at most
-    // parameters.maximum_cells active cells. Returns the number flagged.
+    // largest indicator first, as long as the refined mesh, with the cells
+    // deal.II's closure of the flags adds, keeps at most
+    // parameters.maximum_cells active cells. Returns the number of
+    // candidates flagged (the closure's flags are set too).
     unsigned int
     flag_cells_for_refinement(Triangulation<3>           &mesh,
                               const std::vector<double>  &indicator,
