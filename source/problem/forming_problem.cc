@@ -6,6 +6,7 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deepdraw/fe/hanging_node_constraints.h>
 #include <deepdraw/fe/selective_reduced_quadrature.h>
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/problem/forming_problem.h>
@@ -39,6 +40,7 @@ namespace deepdraw
       geometry::SquareCupToolParameters::declare_parameters(prm);
       ContactCoupling::declare_parameters(prm);
       CheckpointParameters::declare_parameters(prm);
+      AdaptivityParameters::declare_parameters(prm);
     }
 
 
@@ -71,6 +73,7 @@ namespace deepdraw
                                input_directory,
                                process_parameters.blank_holder_force);
       checkpoint_parameters.parse_parameters(prm);
+      adaptivity_parameters.parse_parameters(prm);
       parameter_listing = flatten_parameters(prm);
       check_input();
 
@@ -113,105 +116,15 @@ namespace deepdraw
         if (vertex_layer[v] == geometry.layers_through_thickness)
           column_end_vertices[vertex_column[v]][1] = v;
       }
-      dof_handler.distribute_dofs(fe);
-      scalar_dof_handler.distribute_dofs(fe_scalar);
-
-      vertex_dofs.assign(triangulation.n_vertices(),
-                         {{numbers::invalid_dof_index,
-                           numbers::invalid_dof_index,
-                           numbers::invalid_dof_index}});
-      dof_initial_position.resize(dof_handler.n_dofs());
-      dof_component.resize(dof_handler.n_dofs());
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        for (const unsigned int v : cell->vertex_indices())
-          for (unsigned int c = 0; c < 3; ++c)
-          {
-            const auto dof = cell->vertex_dof_index(v, c);
-            vertex_dofs[cell->vertex_index(v)][c] = dof;
-            dof_initial_position[dof]             = cell->vertex(v);
-            dof_component[dof]                    = c;
-          }
-
-      // Vertices of each face of the blank (by boundary id), sorted.
-      std::vector<std::vector<unsigned int>> face_vertices(6);
-      for (const auto &cell : triangulation.active_cell_iterators())
-        for (const auto &face : cell->face_iterators())
-          if (face->at_boundary())
-            for (const unsigned int v : face->vertex_indices())
-              face_vertices[face->boundary_id()].push_back(
-                face->vertex_index(v));
-      for (unsigned int id = 0; id < face_vertices.size(); ++id)
-      {
-        auto &vertices = face_vertices[id];
-        std::sort(vertices.begin(), vertices.end());
-        vertices.erase(std::unique(vertices.begin(), vertices.end()),
-                       vertices.end());
-        face_dofs[id].clear();
-        for (const unsigned int vertex : vertices)
-          face_dofs[id].insert(face_dofs[id].end(),
-                               vertex_dofs[vertex].begin(),
-                               vertex_dofs[vertex].end());
-        std::sort(face_dofs[id].begin(), face_dofs[id].end());
-      }
-
-      // Prescribed dofs; a later entry overrides an earlier one.
-      std::map<types::global_dof_index, const PrescribedDisplacement *> owner;
-      for (const PrescribedDisplacement &entry : prescribed.entries)
-        for (const unsigned int vertex : face_vertices[entry.boundary_id])
-          owner[vertex_dofs[vertex][entry.component]] = &entry;
-      prescribed_dofs.assign(owner.begin(), owner.end());
-
-      // Contact unknowns follow the displacements (block system of
-      // reference Eq. 19).
-      types::global_dof_index n_unknowns = dof_handler.n_dofs();
       if (contact.active())
-      {
         contact.create_tools(square_cup_tool_parameters,
                              geometry.thickness,
                              geometry.symmetry_plane_x,
                              geometry.symmetry_plane_y);
-        const double element_size
-          = std::sqrt(geometry.length / geometry.elements_along_x
-                      * geometry.width / geometry.elements_along_y);
-        n_unknowns += contact.create_pairs(face_vertices,
-                                           vertex_dofs,
-                                           dof_handler.n_dofs(),
-                                           material_parameters.youngs_modulus,
-                                           element_size);
-      }
-
-      constrained_multipliers.clear();
-      for (const auto &[u_dof, multiplier] : contact.multiplier_partners())
-        if (owner.count(u_dof) > 0)
-          constrained_multipliers.push_back(multiplier);
-      homogeneous_constraints.clear();
-      homogeneous_constraints.reinit(complete_index_set(n_unknowns));
-      for (const auto &[dof, entry] : prescribed_dofs)
-        homogeneous_constraints.add_line(dof);
-      for (const auto dof : constrained_multipliers)
-        homogeneous_constraints.add_line(dof);
-      homogeneous_constraints.close();
-
-      DynamicSparsityPattern displacement_dsp(dof_handler.n_dofs(),
-                                              dof_handler.n_dofs());
-      DoFTools::make_sparsity_pattern(dof_handler,
-                                      displacement_dsp,
-                                      homogeneous_constraints,
-                                      /*keep_constrained_dofs=*/true);
-      DynamicSparsityPattern dsp(n_unknowns, n_unknowns);
-      for (types::global_dof_index row = 0; row < dof_handler.n_dofs(); ++row)
-        for (auto entry = displacement_dsp.begin(row);
-             entry != displacement_dsp.end(row);
-             ++entry)
-          dsp.add(row, entry->column());
-      contact.add_sparsity(dsp);
-      sparsity_pattern.copy_from(dsp);
-      system_matrix.reinit(sparsity_pattern);
-      system_rhs.reinit(n_unknowns);
-      internal_force.reinit(n_unknowns);
+      dof_handler.distribute_dofs(fe);
+      setup_dofs();
       state.total_displacement.reinit(dof_handler.n_dofs());
-      newton_unknowns.reinit(n_unknowns);
-      state.converged_solution.reinit(n_unknowns);
+      state.converged_solution.reinit(newton_unknowns.size());
 
       // Initial state: unstressed, material axes rotated about z by
       // Material/Rolling direction angle.
@@ -244,6 +157,138 @@ namespace deepdraw
 
 
     void
+    FormingProblem::setup_dofs()
+    {
+      // Hanging vertices of a refined mesh (doc/theory.md §8): their dofs
+      // follow their masters, so they are neither prescribed nor contact
+      // nodes (D82).
+      hanging_node_constraints.clear();
+      fe::make_q1_hanging_node_constraints(dof_handler,
+                                           hanging_node_constraints);
+      hanging_node_constraints.close();
+      scalar_dof_handler.distribute_dofs(fe_scalar);
+
+      vertex_dofs.assign(triangulation.n_vertices(),
+                         {{numbers::invalid_dof_index,
+                           numbers::invalid_dof_index,
+                           numbers::invalid_dof_index}});
+      dof_initial_position.resize(dof_handler.n_dofs());
+      dof_component.resize(dof_handler.n_dofs());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        for (const unsigned int v : cell->vertex_indices())
+          for (unsigned int c = 0; c < 3; ++c)
+          {
+            const auto dof = cell->vertex_dof_index(v, c);
+            vertex_dofs[cell->vertex_index(v)][c] = dof;
+            dof_initial_position[dof] = initial_vertices[cell->vertex_index(v)];
+            dof_component[dof]        = c;
+          }
+
+      // Vertices of each face of the blank (by boundary id), sorted.
+      std::vector<std::vector<unsigned int>> face_vertices(6);
+      for (const auto &cell : triangulation.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary())
+            for (const unsigned int v : face->vertex_indices())
+              face_vertices[face->boundary_id()].push_back(
+                face->vertex_index(v));
+      for (unsigned int id = 0; id < face_vertices.size(); ++id)
+      {
+        auto &vertices = face_vertices[id];
+        std::sort(vertices.begin(), vertices.end());
+        vertices.erase(std::unique(vertices.begin(), vertices.end()),
+                       vertices.end());
+        face_dofs[id].clear();
+        for (const unsigned int vertex : vertices)
+          face_dofs[id].insert(face_dofs[id].end(),
+                               vertex_dofs[vertex].begin(),
+                               vertex_dofs[vertex].end());
+        std::sort(face_dofs[id].begin(), face_dofs[id].end());
+      }
+
+      // The faces' reactions sum over all their vertices; prescribed dofs
+      // and contact pairs are those of the vertices that are not hanging.
+      for (auto &vertices : face_vertices)
+        vertices.erase(
+          std::remove_if(vertices.begin(),
+                         vertices.end(),
+                         [&](const unsigned int vertex) {
+                           return hanging_node_constraints.is_constrained(
+                             vertex_dofs[vertex][0]);
+                         }),
+          vertices.end());
+
+      // Prescribed dofs; a later entry overrides an earlier one.
+      std::map<types::global_dof_index, const PrescribedDisplacement *> owner;
+      for (const PrescribedDisplacement &entry : prescribed.entries)
+        for (const unsigned int vertex : face_vertices[entry.boundary_id])
+          owner[vertex_dofs[vertex][entry.component]] = &entry;
+      prescribed_dofs.assign(owner.begin(), owner.end());
+
+      // Contact unknowns follow the displacements (block system of
+      // reference Eq. 19). The augmentation keeps the element size of the
+      // blank's mesh on refined meshes: it changes the iterates, not the
+      // converged solution (D82).
+      types::global_dof_index n_unknowns = dof_handler.n_dofs();
+      if (contact.active())
+      {
+        const double element_size
+          = std::sqrt(geometry.length / geometry.elements_along_x
+                      * geometry.width / geometry.elements_along_y);
+        n_unknowns += contact.create_pairs(face_vertices,
+                                           vertex_dofs,
+                                           dof_handler.n_dofs(),
+                                           material_parameters.youngs_modulus,
+                                           element_size);
+      }
+
+      constrained_multipliers.clear();
+      for (const auto &[u_dof, multiplier] : contact.multiplier_partners())
+        if (owner.count(u_dof) > 0)
+          constrained_multipliers.push_back(multiplier);
+      homogeneous_constraints.clear();
+      homogeneous_constraints.reinit(complete_index_set(n_unknowns));
+      for (const auto &[dof, entry] : prescribed_dofs)
+        homogeneous_constraints.add_line(dof);
+      for (const auto dof : constrained_multipliers)
+        homogeneous_constraints.add_line(dof);
+      add_hanging_node_constraints(homogeneous_constraints);
+      homogeneous_constraints.close();
+
+      DynamicSparsityPattern displacement_dsp(dof_handler.n_dofs(),
+                                              dof_handler.n_dofs());
+      DoFTools::make_sparsity_pattern(dof_handler,
+                                      displacement_dsp,
+                                      homogeneous_constraints,
+                                      /*keep_constrained_dofs=*/true);
+      DynamicSparsityPattern dsp(n_unknowns, n_unknowns);
+      for (types::global_dof_index row = 0; row < dof_handler.n_dofs(); ++row)
+        for (auto entry = displacement_dsp.begin(row);
+             entry != displacement_dsp.end(row);
+             ++entry)
+          dsp.add(row, entry->column());
+      contact.add_sparsity(dsp);
+      sparsity_pattern.copy_from(dsp);
+      system_matrix.reinit(sparsity_pattern);
+      system_rhs.reinit(n_unknowns);
+      internal_force.reinit(n_unknowns);
+      newton_unknowns.reinit(n_unknowns);
+    }
+
+
+    void
+    FormingProblem::add_hanging_node_constraints(
+      AffineConstraints<double> &constraints) const
+    {
+      for (const auto &line : hanging_node_constraints.get_lines())
+      {
+        constraints.add_line(line.index);
+        constraints.add_entries(line.index, line.entries);
+      }
+    }
+
+
+    void
     FormingProblem::set_up_prescribed_increment(const double old_load,
                                                 const double new_load)
     {
@@ -259,6 +304,7 @@ namespace deepdraw
       }
       for (const auto dof : constrained_multipliers)
         predictor_constraints.add_line(dof);
+      add_hanging_node_constraints(predictor_constraints);
       predictor_constraints.close();
     }
 
@@ -296,8 +342,7 @@ namespace deepdraw
     {
       state.history             = trial_history;
       state.enhanced_parameters = trial_enhanced_parameters;
-      for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
-        state.total_displacement[i] += newton_unknowns[i];
+      hanging_node_constraints.distribute(newton_unknowns);
       state.previous_converged_solution = state.converged_solution;
       state.converged_solution          = newton_unknowns;
       state.last_load_increment         = target_load - start_load;
@@ -307,6 +352,18 @@ namespace deepdraw
         contact.commit(newton_unknowns);
         state.contact = contact.committed_history();
       }
+      move_mesh();
+    }
+
+
+    void
+    FormingProblem::move_mesh()
+    {
+      // Hanging dofs follow their masters (the predictor's damped step can
+      // leave them behind).
+      hanging_node_constraints.distribute(newton_unknowns);
+      for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
+        state.total_displacement[i] += newton_unknowns[i];
       // Updated Lagrangian: the converged configuration becomes the
       // reference of the next increment (step-18 moves the vertices too).
       std::vector<bool> moved(triangulation.n_vertices(), false);
@@ -392,6 +449,13 @@ namespace deepdraw
     FormingProblem::n_displacement_dofs() const
     {
       return dof_handler.n_dofs();
+    }
+
+
+    const std::vector<FormingProblem::RefinementRecord> &
+    FormingProblem::refinement_records() const
+    {
+      return refinement_history;
     }
 
 

@@ -49,11 +49,22 @@ namespace deepdraw
 
 
     FormingProblem::IncrementOutcome
-    FormingProblem::assemble(const Vector<double>            &du,
+    FormingProblem::assemble(const Vector<double>            &unknowns,
                              const AffineConstraints<double> &constraints,
                              const bool                       assemble_matrix)
     {
       Timer timer;
+      // On a refined mesh the hanging dofs are evaluated from their masters
+      // (an iterate may not satisfy the constraints, e.g. after the
+      // predictor's damped step).
+      Vector<double> consistent;
+      if (hanging_node_constraints.n_constraints() > 0)
+      {
+        consistent = unknowns;
+        hanging_node_constraints.distribute(consistent);
+      }
+      const Vector<double> &du
+        = hanging_node_constraints.n_constraints() > 0 ? consistent : unknowns;
       if (assemble_matrix)
         system_matrix = 0.;
       system_rhs     = 0.;
@@ -124,6 +135,10 @@ namespace deepdraw
                       AssemblyScratch(),
                       AssemblyCopy());
       n_plastic_points = plastic_points;
+      // The nodal forces of hanging vertices belong to their masters: the
+      // reactions of a face are those of the condensed system.
+      if (hanging_node_constraints.n_constraints() > 0)
+        hanging_node_constraints.condense(internal_force);
       assembly_time += timer.wall_time();
 
       // Contact forces and their constraints, after the elements so that

@@ -1,6 +1,7 @@
 // Checkpoint and restart of FormingProblem (doc/user_guide.md §6, D55):
 // the committed SimulationState, the parameter listing and the output
 // progress; a resumed run continues the same arithmetic from there.
+#include <deepdraw/fe/selective_reduced_quadrature.h>
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/problem/forming_problem.h>
 #include <sstream>
@@ -64,6 +65,10 @@ namespace deepdraw
         throw InputError(message.str());
       }
       SimulationState &saved = checkpoint.state;
+      // The mesh is rebuilt from the prm; an adaptive run's refinements
+      // are replayed on it (D84).
+      if (!saved.refinements.empty())
+        replay_refinements(saved.refinements);
       check_sizes("vertices",
                   saved.vertices.size(),
                   triangulation.n_vertices());
@@ -73,12 +78,14 @@ namespace deepdraw
       check_sizes("Newton unknowns",
                   saved.converged_solution.size(),
                   newton_unknowns.size());
+      // Against the mesh (the refinements replayed), not the initial state.
+      const std::size_t n_cells = triangulation.n_active_cells();
       check_sizes("quadrature points",
                   saved.history.size(),
-                  state.history.size());
+                  n_cells * fe::n_weighted_points);
       check_sizes("cells with enhanced parameters",
                   saved.enhanced_parameters.size(),
-                  state.enhanced_parameters.size());
+                  state.enhanced_parameters.empty() ? 0 : n_cells);
       if (contact.active())
         contact.restore(saved.contact);
 

@@ -120,6 +120,8 @@ namespace deepdraw
           decoupled.insert(decoupled.end(),
                            constrained_multipliers.begin(),
                            constrained_multipliers.end());
+          for (const auto &line : hanging_node_constraints.get_lines())
+            decoupled.push_back(line.index);
           contact.add_open_multipliers(decoupled);
         }
         linear_solver->solve(system_matrix,
@@ -213,13 +215,14 @@ namespace deepdraw
                                      const solver::ResidualMeasures &residuals,
                                      const double relative_correction)
     {
-      newton_file.add_row({double(state.increment_number + 1),
-                           target_load,
-                           double(iterations),
-                           residuals.force,
-                           residuals.contact,
-                           relative_correction,
-                           double(contact_changes - changes_reported)});
+      newton_file.add_row(
+        {double(state.increment_number + (reequilibrating ? 0 : 1)),
+         target_load,
+         double(iterations),
+         residuals.force,
+         residuals.contact,
+         relative_correction,
+         double(contact_changes - changes_reported)});
       changes_reported = contact_changes;
     }
   } // namespace problem

@@ -8,6 +8,7 @@
 #include <deepdraw/io/output_error.h>
 #include <deepdraw/io/output_file.h>
 #include <deepdraw/problem/forming_problem.h>
+#include <deepdraw/problem/nodal_surface_area.h>
 #include <deepdraw/problem/thickness_profiles.h>
 #include <filesystem>
 #include <iomanip>
@@ -40,8 +41,13 @@ namespace deepdraw
               n = -n;
             n /= n.norm();
             const double sign = face->boundary_id() == 5 ? 1. : -1.;
+            // Vertices added by adaptive refinement belong to no column of
+            // the blank's mesh: the thickness is measured at the blank's
+            // columns only (TODO: the mesh-independent thickness
+            // measurement of issue 16 replaces this at the merge, D85).
             for (const unsigned int v : face->vertex_indices())
-              normal[vertex_column[face->vertex_index(v)]] += sign * n;
+              if (face->vertex_index(v) < vertex_column.size())
+                normal[vertex_column[face->vertex_index(v)]] += sign * n;
           }
       column_thickness.resize(n_columns);
       for (unsigned int c = 0; c < n_columns; ++c)
@@ -96,6 +102,7 @@ namespace deepdraw
         newton_file.close_silently();
         reactions_file.close_silently();
         tools_file.close_silently();
+        adaptivity_file.close_silently();
         if (!existed)
         {
           std::error_code ignored;
@@ -158,6 +165,22 @@ namespace deepdraw
 
         process_tables.open(directory, resume);
       }
+      if (adaptivity_parameters.enabled)
+        adaptivity_file.open(directory + "/adaptivity.csv",
+                             {"cycle",
+                              "increment",
+                              "load",
+                              "cells_before",
+                              "cells_after",
+                              "hanging_vertices",
+                              "displacement_unknowns",
+                              "contact_unknowns",
+                              "initial_force_residual",
+                              "initial_contact_residual",
+                              "reequilibration_iterations",
+                              "force_residual",
+                              "wall_s"},
+                             resume);
       if (!resume)
         write_increment_tables(0.);
     }
@@ -268,11 +291,25 @@ namespace deepdraw
 
       // Thickness strain ln(t/t0) at every vertex of a column.
       Vector<double> thickness_strain(scalar_dof_handler.n_dofs());
+      // At a vertex added by adaptive refinement: interpolated from the
+      // columns of its parents among the blank's vertices (D85).
+      const auto column_strain = [&](const unsigned int vertex)
+      {
+        return std::log(column_thickness[vertex_column[vertex]]
+                        / geometry.thickness);
+      };
       for (const auto &cell : scalar_dof_handler.active_cell_iterators())
         for (const unsigned int v : cell->vertex_indices())
-          thickness_strain[cell->vertex_dof_index(v, 0)]
-            = std::log(column_thickness[vertex_column[cell->vertex_index(v)]]
-                       / geometry.thickness);
+        {
+          const unsigned int vertex = cell->vertex_index(v);
+          double             strain = 0.;
+          if (vertex < vertex_column.size())
+            strain = column_strain(vertex);
+          else
+            for (const auto &[blank, weight] : blank_vertex_parents[vertex])
+              strain += weight * column_strain(blank);
+          thickness_strain[cell->vertex_dof_index(v, 0)] = strain;
+        }
 
       DataOut<3> data_out;
       data_out.attach_triangulation(triangulation);
@@ -302,13 +339,7 @@ namespace deepdraw
       {
         const std::vector<ContactCoupling::NodalContact> nodal
           = contact.nodal_contact(triangulation.n_vertices());
-        std::vector<double> area(triangulation.n_vertices(), 0.);
-        for (const auto &cell : triangulation.active_cell_iterators())
-          for (const auto &face : cell->face_iterators())
-            if (face->at_boundary()
-                && (face->boundary_id() == 4 || face->boundary_id() == 5))
-              for (const unsigned int v : face->vertex_indices())
-                area[face->vertex_index(v)] += face->measure() / 4.;
+        const std::vector<double> area = nodal_surface_area(triangulation);
         for (const auto &cell : scalar_dof_handler.active_cell_iterators())
           for (const unsigned int v : cell->vertex_indices())
           {

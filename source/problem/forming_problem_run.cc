@@ -190,12 +190,6 @@ namespace deepdraw
                                      contact.search_time() - search_time_before,
                                      increment_timer.wall_time()};
         write_statistics_row(record);
-        committed_table_sizes
-          = csv_table_sizes(output_parameters.output_directory);
-        if (checkpoint_parameters.interval > 0
-            && state.increment_number % checkpoint_parameters.interval == 0)
-          save_checkpoint();
-
         if (!options.quiet)
         {
           // Remaining time: the load still to go at the mean rate of this
@@ -208,6 +202,21 @@ namespace deepdraw
                         : 0.;
           print_increment_line(record, elapsed, remaining);
         }
+        // Adaptive refinement and re-equilibration at this load (D80).
+        const std::size_t refinements = refinement_history.size();
+        if (!adapt_mesh(control.finished(), reason))
+          stop_cleanly("the re-equilibration after refining the mesh at load "
+                       + format_load(state.load) + " failed (" + reason + ")");
+        if (!options.quiet && refinement_history.size() > refinements)
+          std::cout << "  refined to " << triangulation.n_active_cells()
+                    << " cells, re-equilibrated in "
+                    << refinement_history.back().iterations << " iteration(s)"
+                    << std::endl;
+        committed_table_sizes
+          = csv_table_sizes(output_parameters.output_directory);
+        if (checkpoint_parameters.interval > 0
+            && state.increment_number % checkpoint_parameters.interval == 0)
+          save_checkpoint();
         assembly_time      = 0.;
         solve_time         = 0.;
         search_time_before = contact.search_time();

@@ -12,7 +12,7 @@ namespace deepdraw
     {
       // A plain binary image in this machine's byte order, with a tag and
       // counts, so that a truncated or foreign stream is detected.
-      constexpr char tag[] = "deepdraw-state-2";
+      constexpr char tag[] = "deepdraw-state-3";
 
       template <typename T>
       void
@@ -144,6 +144,13 @@ namespace deepdraw
       put_doubles(stream,
                   contact.tool_position.data(),
                   contact.tool_position.size());
+      put(stream, refinements.size());
+      for (const auto &cycle : refinements)
+      {
+        put(stream, cycle.size());
+        stream.write(reinterpret_cast<const char *>(cycle.data()),
+                     cycle.size() * sizeof(cycle[0]));
+      }
       if (!stream)
         throw std::runtime_error("simulation state: writing failed");
     }
@@ -194,6 +201,21 @@ namespace deepdraw
       get_values(stream,
                  contact.tool_position.data(),
                  contact.tool_position.size());
+      const std::size_t n_cycles = get_count(stream);
+      if (n_cycles > 100000)
+        throw std::runtime_error("simulation state: bad refinement block");
+      refinements.resize(n_cycles);
+      for (auto &cycle : refinements)
+      {
+        const std::size_t n_cells = get_count(stream);
+        if (n_cells > (std::size_t(1) << 32))
+          throw std::runtime_error("simulation state: bad refinement block");
+        cycle.resize(n_cells);
+        stream.read(reinterpret_cast<char *>(cycle.data()),
+                    cycle.size() * sizeof(cycle[0]));
+        if (!stream)
+          throw std::runtime_error("simulation state: the stream ends early");
+      }
     }
   } // namespace problem
 } // namespace deepdraw

@@ -70,6 +70,8 @@ main(int argc, char *argv[])
   state.contact.pair_open        = {1, 0, 1};
   state.contact.pair_status      = {0, 2, 3};
   state.contact.tool_position    = {0.5, -1.25};
+  // And the refinement cycles of an adaptive run (D84).
+  state.refinements = {{{0, 3, 7}, {1, 12, 4}}, {}, {{2, 5, 3}}};
 
   // The state is not trivial (else the comparison proves little).
   double largest_plastic_strain = 0., largest_enhanced = 0., axes_turn = 0.;
@@ -138,6 +140,8 @@ main(int argc, char *argv[])
                                    == state.contact.pair_status
                               && copy.contact.tool_position
                                    == state.contact.tool_position);
+  deepdraw_test::check_true("refinement cycles",
+                            copy.refinements == state.refinements);
   deepdraw_test::check_true("vertices", vertices_same);
   deepdraw_test::check_true(
     "total displacement, Newton unknowns",

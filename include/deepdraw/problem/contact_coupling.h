@@ -21,6 +21,7 @@
 #include <deepdraw/contact/alart_curnier_law.h>
 #include <deepdraw/contact/contact_pair.h>
 #include <deepdraw/contact/contact_parameters.h>
+#include <deepdraw/fe/vertex_parents.h>
 #include <deepdraw/geometry/rigid_tool.h>
 #include <deepdraw/geometry/square_cup_tools.h>
 #include <deepdraw/problem/simulation_state.h>
@@ -240,6 +241,44 @@ namespace deepdraw
       check_tool_sides(const std::vector<Point<3>> &positions,
                        const Vector<double>        &solution,
                        double                       sheet_thickness) const;
+
+      // The contact state of every pair, carried over a mesh change
+      // (contact_coupling_transfer.cc, doc/theory.md §8.2): the multipliers
+      // of the last two converged Newton solutions, the committed states,
+      // and the tool positions z of both solutions.
+      struct PairSnapshot
+      {
+        unsigned int                vertex;
+        unsigned int                tool;
+        std::array<Tensor<1, 3>, 2> multiplier;
+        bool                        open_at_start;
+        bool                        found;
+        contact::ContactState       state;
+      };
+      struct Snapshot
+      {
+        std::vector<PairSnapshot>          pairs;
+        std::vector<std::array<double, 2>> tool_position;
+      };
+      Snapshot
+      snapshot(const Vector<double> &converged,
+               const Vector<double> &previous) const;
+      // After create_pairs() on the refined mesh: every pair starts from the
+      // pairs of the same tool at its node's parents (an old node: itself).
+      // The multipliers are nodal forces; their pressures λ/a (a: the
+      // node's share of the sheet face, old_area before and new_area after
+      // the refinement, by vertex) are interpolated and multiplied by the
+      // new share, so that a uniform pressure is carried exactly. A pair is
+      // closed only if all its parents' pairs were (slip if one slipped).
+      // Writes the multipliers and tool positions into the contact blocks
+      // of converged and previous (sized for the new unknowns).
+      void
+      transfer(const Snapshot                       &old,
+               const std::vector<fe::VertexParents> &parents,
+               const std::vector<double>            &old_area,
+               const std::vector<double>            &new_area,
+               Vector<double>                       &converged,
+               Vector<double>                       &previous);
 
     private:
       struct Pair

@@ -25,12 +25,14 @@
 #include <deepdraw/fe/element_technology.h>
 #include <deepdraw/fe/hexahedron_element.h>
 #include <deepdraw/fe/quadrature_point_update.h>
+#include <deepdraw/fe/vertex_parents.h>
 #include <deepdraw/geometry/square_cup_tools.h>
 #include <deepdraw/io/csv_file.h>
 #include <deepdraw/io/output_parameters.h>
 #include <deepdraw/io/pvd_record.h>
 #include <deepdraw/material/hill_plasticity.h>
 #include <deepdraw/material/material_parameters.h>
+#include <deepdraw/problem/adaptivity_parameters.h>
 #include <deepdraw/problem/blank_geometry.h>
 #include <deepdraw/problem/checkpoint.h>
 #include <deepdraw/problem/contact_coupling.h>
@@ -162,6 +164,27 @@ namespace deepdraw
       types::global_dof_index
       n_displacement_dofs() const;
 
+      // One mesh refinement of an adaptive run (adaptivity.csv,
+      // forming_problem_adaptivity.cc).
+      struct RefinementRecord
+      {
+        unsigned int cycle;
+        unsigned int increment;
+        double       load;
+        unsigned int cells_before;
+        unsigned int cells_after;
+        unsigned int hanging_vertices;
+        // Force and contact residuals of the transferred state, before the
+        // re-equilibration, and its Newton iterations and last residual.
+        double       initial_force_residual;
+        double       initial_contact_residual;
+        unsigned int iterations;
+        double       force_residual;
+        double       wall_time;
+      };
+      const std::vector<RefinementRecord> &
+      refinement_records() const;
+
     private:
       using IncrementOutcome = solver::IncrementOutcome;
 
@@ -193,6 +216,14 @@ namespace deepdraw
       check_input() const;
       void
       setup_system();
+      // Dofs, hanging-node constraints, prescribed dofs, contact pairs and
+      // the sparsity of the current mesh (after setup_system or a
+      // refinement).
+      void
+      setup_dofs();
+      void
+      add_hanging_node_constraints(
+        AffineConstraints<double> &constraints) const;
       void
       update_cell_geometry();
       void
@@ -212,6 +243,36 @@ namespace deepdraw
                       unsigned int &iterations);
       void
       commit_increment();
+      // Adds the displacement block of newton_unknowns to the total
+      // displacement and moves the mesh by it (updated Lagrangian).
+      void
+      move_mesh();
+
+      // Adaptive refinement (forming_problem_adaptivity.cc, doc/theory.md
+      // §8): after the converged increment, if it is due, flags cells by the
+      // indicator, refines and transfers the state, rebuilds the system and
+      // re-equilibrates at the same load. Returns false if the
+      // re-equilibration failed (reason says why).
+      bool
+      adapt_mesh(bool last_increment, std::string &reason);
+      // Refines the flagged cells and carries the state over (history,
+      // displacements, contact pairs and multipliers).
+      void
+      refine_and_rebuild();
+      // After a refinement that added the vertices from n_old_vertices on:
+      // their parents among the blank's vertices and their initial
+      // positions, interpolated from those (parents: fe::vertex_parents).
+      void
+      add_blank_parents(const std::vector<fe::VertexParents> &parents,
+                        unsigned int                          n_old_vertices);
+      // A resume of an adaptive run: the refinement cycles of the
+      // checkpoint on the blank's mesh, then the dofs and pairs (D84).
+      void
+      replay_refinements(
+        const std::vector<std::vector<std::array<int, 3>>> &cycles);
+      // One Newton solve at the current load without a load increment.
+      IncrementOutcome
+      reequilibrate(unsigned int &iterations);
       void
       compute_thickness();
       // The loads the increments land on (VTU outputs, thickness profiles).
@@ -285,6 +346,7 @@ namespace deepdraw
       ContactCoupling                    contact;
       fe::ElementParameters              element_parameters;
       CheckpointParameters               checkpoint_parameters;
+      AdaptivityParameters               adaptivity_parameters;
       // All parameters, flattened (a checkpoint refuses another model).
       std::string parameter_listing;
 
@@ -307,6 +369,9 @@ namespace deepdraw
       std::array<std::vector<types::global_dof_index>, 6> face_dofs;
       // Bottom and top vertex of every through-thickness column.
       std::vector<std::array<unsigned int, 2>> column_end_vertices;
+      // After adaptive refinement: for every vertex, the blank's vertices it
+      // is interpolated from (empty before the first refinement).
+      std::vector<fe::VertexParents> blank_vertex_parents;
 
       // Constrained dofs with their prescribed displacement entry.
       std::vector<
@@ -315,8 +380,11 @@ namespace deepdraw
       // Contact-force components along prescribed displacement components
       // (held at zero, see ContactCoupling::multiplier_partners).
       std::vector<types::global_dof_index> constrained_multipliers;
-      AffineConstraints<double>            homogeneous_constraints;
-      AffineConstraints<double>            predictor_constraints;
+      // Hanging vertices of a refined mesh (closed; empty on the blank's
+      // mesh), part of both constraint sets below.
+      AffineConstraints<double> hanging_node_constraints;
+      AffineConstraints<double> homogeneous_constraints;
+      AffineConstraints<double> predictor_constraints;
 
       SparsityPattern      sparsity_pattern;
       SparseMatrix<double> system_matrix;
@@ -361,8 +429,14 @@ namespace deepdraw
       io::CsvFile                    newton_file;
       io::CsvFile                    reactions_file;
       io::CsvFile                    tools_file;
-      std::vector<unsigned int>      reaction_faces;
-      unsigned int                   output_step = 0;
+      // adaptivity.csv: one row per refinement (adaptive runs only).
+      io::CsvFile                   adaptivity_file;
+      std::vector<RefinementRecord> refinement_history;
+      // newton.csv rows of a re-equilibration belong to the increment just
+      // converged, not the next.
+      bool                      reequilibrating = false;
+      std::vector<unsigned int> reaction_faces;
+      unsigned int              output_step = 0;
       // The steps of solution.pvd restored from a checkpoint.
       std::vector<io::PvdRecord::Entry> resumed_pvd_steps;
       // Sizes of the CSV tables after the last converged increment's rows

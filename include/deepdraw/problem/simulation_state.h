@@ -6,6 +6,7 @@
 #ifndef deepdraw_problem_simulation_state_h
 #define deepdraw_problem_simulation_state_h
 
+#include <array>
 #include <deal.II/base/point.h>
 #include <deal.II/lac/vector.h>
 #include <deepdraw/fe/hexahedron_element.h>
@@ -56,6 +57,10 @@ namespace deepdraw
       std::vector<fe::QuadraturePointHistory> history;
       std::vector<fe::EnhancedParameters>     enhanced_parameters;
       ContactHistory                          contact;
+      // Adaptive refinement (D84): per refinement cycle, the cells flagged
+      // on the mesh of that cycle as (level, index, deal.II refinement
+      // case); a resume replays them on the blank's mesh.
+      std::vector<std::vector<std::array<int, 3>>> refinements;
 
       // Binary image of all of the above; read() throws std::runtime_error
       // if the stream is not one (or was cut short).

@@ -1,0 +1,47 @@
+// Which cells adaptive refinement refines (doc/theory.md §8.1, D81): the
+// indicator of subsection Adaptivity per active cell, and the refine flags
+// it sets within the maximum level and the maximum number of cells.
+#ifndef deepdraw_problem_refinement_indicator_h
+#define deepdraw_problem_refinement_indicator_h
+
+#include <deal.II/grid/tria.h>
+#include <deepdraw/fe/quadrature_point_update.h>
+#include <deepdraw/problem/adaptivity_parameters.h>
+#include <vector>
+
+namespace deepdraw
+{
+  namespace problem
+  {
+    using namespace dealii;
+
+    // Per active cell: the largest jump |ε̄ᵖ_K − ε̄ᵖ_N| of the cell-average
+    // equivalent plastic strain to a face neighbour N (history has
+    // fe::n_weighted_points per cell, by active cell index).
+    std::vector<double>
+    plastic_strain_jump(const Triangulation<3>                        &mesh,
+                        const std::vector<fe::QuadraturePointHistory> &history);
+
+    // Per active cell: 1 if its centre in the initial configuration
+    // (initial_vertices) lies in the box [low, high], else 0.
+    std::vector<double>
+    region_indicator(const Triangulation<3>      &mesh,
+                     const std::vector<Point<3>> &initial_vertices,
+                     const Point<3>              &low,
+                     const Point<3>              &high);
+
+    // Sets the refine flag (parameters.refinement_case()) of the cells whose
+    // indicator exceeds threshold and whose level is below the maximum,
+    // largest indicator first, as long as the refined mesh, with the cells
+    // deal.II's closure of the flags adds, keeps at most
+    // parameters.maximum_cells active cells. Returns the number of
+    // candidates flagged (the closure's flags are set too).
+    unsigned int
+    flag_cells_for_refinement(Triangulation<3>           &mesh,
+                              const std::vector<double>  &indicator,
+                              double                      threshold,
+                              const AdaptivityParameters &parameters);
+  } // namespace problem
+} // namespace deepdraw
+
+#endif
