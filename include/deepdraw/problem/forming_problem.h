@@ -34,9 +34,11 @@
 #include <deepdraw/problem/blank_geometry.h>
 #include <deepdraw/problem/checkpoint.h>
 #include <deepdraw/problem/contact_coupling.h>
+#include <deepdraw/problem/earing_profile.h>
 #include <deepdraw/problem/prescribed_displacements.h>
 #include <deepdraw/problem/process_parameters.h>
 #include <deepdraw/problem/process_tables.h>
+#include <deepdraw/problem/sheet_thickness.h>
 #include <deepdraw/problem/simulation_state.h>
 #include <deepdraw/solver/increment_control.h>
 #include <deepdraw/solver/linear_solver.h>
@@ -144,12 +146,14 @@ namespace deepdraw
       // Volume of the sheet in the current configuration (mm³).
       double
       sheet_volume() const;
-      // Current thickness of each through-thickness column.
+      // Current thickness at the initial in-plane position (X, Y) of every
+      // vertex (SheetThickness, doc/theory.md §6).
       const std::vector<double> &
-      get_column_thickness() const;
-      // For every vertex, the index of its column.
-      const std::vector<unsigned int> &
-      get_vertex_column() const;
+      get_vertex_thickness() const;
+      // The thickness measurement of the sheet (its vertex normals of the
+      // current configuration).
+      const SheetThickness &
+      get_sheet_thickness() const;
 
       // Newton history of the last increment: relative force residuals.
       const std::vector<double> &
@@ -263,9 +267,13 @@ namespace deepdraw
       write_vtu(double load);
       void
       write_increment_tables(double load);
-      // thickness_OX/OD_<travel>mm.csv at a requested travel.
+      // thickness_OX/OY/OD_<travel>mm.csv and earing_<travel>mm.csv at a
+      // requested travel.
       void
       write_thickness_profiles(double travel);
+      // The points of the thickness profiles (setup_system).
+      void
+      set_up_thickness_profiles();
 
       // Wall time since the problem was constructed: the reported run time
       // includes the set-up (mesh, tools, pairs), which a tool of many
@@ -294,8 +302,6 @@ namespace deepdraw
       // Discretisation
       Triangulation<3>                                    triangulation;
       std::vector<Point<3>>                               initial_vertices;
-      std::vector<unsigned int>                           vertex_column;
-      std::vector<unsigned int>                           vertex_layer;
       FESystem<3>                                         fe;
       DoFHandler<3>                                       dof_handler;
       FE_Q<3>                                             fe_scalar;
@@ -305,8 +311,20 @@ namespace deepdraw
       std::vector<unsigned int>                           dof_component;
       std::vector<fe::CellGeometry>                       cell_geometry;
       std::array<std::vector<types::global_dof_index>, 6> face_dofs;
-      // Bottom and top vertex of every through-thickness column.
-      std::vector<std::array<unsigned int, 2>> column_end_vertices;
+      // Thickness of the sheet at reference points, and where each
+      // vertex's initial (X, Y) lies on its surfaces.
+      std::unique_ptr<SheetThickness>       sheet_thickness;
+      std::vector<SheetThickness::Location> vertex_locations;
+      // The OX, OY, OD profiles: name, initial distance s0 from the origin
+      // and location of each point (doc/user_guide.md §3.1).
+      struct ThicknessProfile
+      {
+        std::string                                              name;
+        std::vector<std::pair<double, SheetThickness::Location>> points;
+      };
+      std::vector<ThicknessProfile> thickness_profiles;
+      // Rim of the blank for earing_<travel>mm.csv.
+      EaringProfile earing;
 
       // Constrained dofs with their prescribed displacement entry.
       std::vector<
@@ -343,7 +361,7 @@ namespace deepdraw
       solver::LinearSolver::Statistics reported_solver_statistics;
 
       // Results
-      std::vector<double> column_thickness;
+      std::vector<double> vertex_thickness;
       std::vector<double> residual_history;
       std::vector<double> contact_residual_history;
       unsigned int        contact_changes = 0;
