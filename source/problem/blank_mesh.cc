@@ -132,14 +132,13 @@ namespace deepdraw
       std::vector<CellData<2>> quarter_cells, cells;
       add_quarter_disc(m, k, quarter_vertices, quarter_cells);
 
-      // The modelled quadrants, as quarter turns of the first one (exact).
-      std::vector<unsigned int> turns = {0};
-      if (!symmetry_plane_y)
-        turns.push_back(1);
-      if (!symmetry_plane_x)
-        turns.push_back(symmetry_plane_y ? 3 : 2);
-      if (!symmetry_plane_x && !symmetry_plane_y)
-        turns.push_back(3);
+      // The modelled quadrants, as quarter turns of the first one (exact):
+      // turn q covers x > 0 for q = 0, 3 and y > 0 for q = 0, 1.
+      std::vector<unsigned int> turns;
+      for (const unsigned int q : {0u, 1u, 2u, 3u})
+        if ((!symmetry_plane_x || q == 0 || q == 3)
+            && (!symmetry_plane_y || q == 0 || q == 1))
+          turns.push_back(q);
       for (const unsigned int turn : turns)
       {
         const unsigned int first = vertices.size();
@@ -188,8 +187,14 @@ namespace deepdraw
       }
       catch (const ExceptionBase &error)
       {
+        // deal.II's message without its banner and stack trace.
+        std::string       reason = error.what();
+        const std::string info   = "Additional information:";
+        if (const auto k = reason.find(info); k != std::string::npos)
+          reason = reason.substr(k + info.size());
+        reason = reason.substr(0, reason.find("Stacktrace"));
         throw InputError(name + ": not a usable two-dimensional Gmsh mesh: "
-                         + io::one_line(error.what(), 500));
+                         + io::one_line(reason, 500));
       }
       catch (const std::exception &error)
       {
