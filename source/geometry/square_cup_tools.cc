@@ -47,11 +47,13 @@ namespace deepdraw::geometry
     {
       const double   c = inner - r;
       const Point<3> center(c, c, z);
-      add(patches,
-          ruled_patch(
-            straight_segment(Point<3>(inner, 0, z), Point<3>(outer, 0, z)),
-            straight_segment(Point<3>(inner, c, z), Point<3>(outer, c, z))),
-          towards_sheet);
+      // c = 0: a round hole, no straight sides (the cylindrical cup, D76).
+      if (c > 0.)
+        add(patches,
+            ruled_patch(
+              straight_segment(Point<3>(inner, 0, z), Point<3>(outer, 0, z)),
+              straight_segment(Point<3>(inner, c, z), Point<3>(outer, c, z))),
+            towards_sheet);
       const RationalCurve lower = circular_arc(center, r * e_x, e_z, M_PI / 4);
       add(patches,
           ruled_patch(lower,
@@ -67,11 +69,12 @@ namespace deepdraw::geometry
                                        Point<3>(c, outer, z),
                                        upper.weights)),
           towards_sheet);
-      add(patches,
-          ruled_patch(
-            straight_segment(Point<3>(0, inner, z), Point<3>(c, inner, z)),
-            straight_segment(Point<3>(0, outer, z), Point<3>(c, outer, z))),
-          towards_sheet);
+      if (c > 0.)
+        add(patches,
+            ruled_patch(
+              straight_segment(Point<3>(0, inner, z), Point<3>(c, inner, z)),
+              straight_segment(Point<3>(0, outer, z), Point<3>(c, outer, z))),
+            towards_sheet);
     }
 
     // Flat rounded square of half-width c + r with plan corner radius r
@@ -87,18 +90,22 @@ namespace deepdraw::geometry
     {
       const auto segment = [](const Point<3> &a, const Point<3> &b)
       { return straight_segment(a, b); };
-      add(patches,
-          ruled_patch(segment(Point<3>(0, 0, z), Point<3>(c, 0, z)),
-                      segment(Point<3>(0, c, z), Point<3>(c, c, z))),
-          towards_sheet);
-      add(patches,
-          ruled_patch(segment(Point<3>(c, 0, z), Point<3>(c + r, 0, z)),
-                      segment(Point<3>(c, c, z), Point<3>(c + r, c, z))),
-          towards_sheet);
-      add(patches,
-          ruled_patch(segment(Point<3>(0, c, z), Point<3>(c, c, z)),
-                      segment(Point<3>(0, c + r, z), Point<3>(c, c + r, z))),
-          towards_sheet);
+      // c = 0: the quarter disc alone (a round punch face, D76).
+      if (c > 0.)
+      {
+        add(patches,
+            ruled_patch(segment(Point<3>(0, 0, z), Point<3>(c, 0, z)),
+                        segment(Point<3>(0, c, z), Point<3>(c, c, z))),
+            towards_sheet);
+        add(patches,
+            ruled_patch(segment(Point<3>(c, 0, z), Point<3>(c + r, 0, z)),
+                        segment(Point<3>(c, c, z), Point<3>(c + r, c, z))),
+            towards_sheet);
+        add(patches,
+            ruled_patch(segment(Point<3>(0, c, z), Point<3>(c, c, z)),
+                        segment(Point<3>(0, c + r, z), Point<3>(c, c + r, z))),
+            towards_sheet);
+      }
       const Point<3> center(c, c, z);
       const Point<3> half_x = center + 0.5 * r * e_x;
       const Point<3> half_y = center + 0.5 * r * e_y;
@@ -141,11 +148,13 @@ namespace deepdraw::geometry
       const double   s       = start_sign;
       const double   t       = turn_sign;
       const Point<3> center_x(tube_half_width, 0, tube_z);
-      add(patches,
-          extruded_patch(
-            circular_arc(center_x, radius * s * e_z, axis_xz, M_PI / 2),
-            c * e_y),
-          vector(t, 0., s));
+      // c = 0: the torus corner alone (a round contour, D76).
+      if (c > 0.)
+        add(patches,
+            extruded_patch(
+              circular_arc(center_x, radius * s * e_z, axis_xz, M_PI / 2),
+              c * e_y),
+            vector(t, 0., s));
       const Point<3> center_corner(tube_half_width, c, tube_z);
       add(patches,
           revolved_patch(
@@ -155,11 +164,12 @@ namespace deepdraw::geometry
             M_PI / 2),
           vector(t * s45, t * s45, s));
       const Point<3> center_y(0, tube_half_width, tube_z);
-      add(patches,
-          extruded_patch(
-            circular_arc(center_y, radius * s * e_z, axis_yz, M_PI / 2),
-            c * e_x),
-          vector(0., t, s));
+      if (c > 0.)
+        add(patches,
+            extruded_patch(
+              circular_arc(center_y, radius * s * e_z, axis_yz, M_PI / 2),
+              c * e_x),
+            vector(0., t, s));
     }
 
     // Vertical wall of a rounded square (half-width c + r, plan corner
@@ -174,7 +184,10 @@ namespace deepdraw::geometry
     {
       const double w = c + r;
       const double o = outward_sign;
-      add(patches,
+      // c = 0: the cylinder alone (D76).
+      if (c > 0.)
+        add(
+          patches,
           ruled_patch(straight_segment(Point<3>(w, 0, z0), Point<3>(w, c, z0)),
                       straight_segment(Point<3>(w, 0, z1), Point<3>(w, c, z1))),
           o * e_x);
@@ -183,7 +196,9 @@ namespace deepdraw::geometry
         extruded_patch(circular_arc(Point<3>(c, c, z0), r * e_x, e_z, M_PI / 2),
                        (z1 - z0) * e_z),
         vector(o * s45, o * s45, 0.));
-      add(patches,
+      if (c > 0.)
+        add(
+          patches,
           ruled_patch(straight_segment(Point<3>(0, w, z0), Point<3>(c, w, z0)),
                       straight_segment(Point<3>(0, w, z1), Point<3>(c, w, z1))),
           o * e_y);
@@ -282,7 +297,9 @@ namespace deepdraw::geometry
         prm.declare_entry("Plan corner radius",
                           value(defaults.punch_corner_radius),
                           Double(0., max_dimension),
-                          "Radius of the punch corners in plan view (mm).");
+                          "Radius of the punch corners in plan view (mm); "
+                          "equal to Half width: a round punch (cylindrical "
+                          "cup).");
         prm.declare_entry("Profile radius",
                           value(defaults.punch_profile_radius),
                           Double(0., max_dimension),
@@ -307,7 +324,9 @@ namespace deepdraw::geometry
         prm.declare_entry("Plan corner radius",
                           value(defaults.die_corner_radius),
                           Double(0., max_dimension),
-                          "Radius of the opening's corners in plan view (mm).");
+                          "Radius of the opening's corners in plan view "
+                          "(mm); equal to Opening half width: a round "
+                          "opening.");
         prm.declare_entry("Shoulder radius",
                           value(defaults.die_shoulder_radius),
                           Double(0., max_dimension),
@@ -384,9 +403,10 @@ namespace deepdraw::geometry
             "Punch/Plan corner radius (" + value(punch_corner_radius)
               + ") must exceed Punch/Profile radius ("
               + value(punch_profile_radius) + ")");
-    require(punch_half_width > punch_corner_radius,
+    // Equal: a round punch (the cylindrical cup, D76).
+    require(punch_half_width >= punch_corner_radius,
             "Punch/Half width (" + value(punch_half_width)
-              + ") must exceed Punch/Plan corner radius ("
+              + ") must be at least Punch/Plan corner radius ("
               + value(punch_corner_radius) + ")");
     require(punch_height > punch_profile_radius,
             "Punch/Height (" + value(punch_height)
@@ -398,9 +418,9 @@ namespace deepdraw::geometry
     require(die_corner_radius > 0.,
             "Die/Plan corner radius (" + value(die_corner_radius)
               + ") must be positive");
-    require(die_opening_half_width > die_corner_radius,
+    require(die_opening_half_width >= die_corner_radius,
             "Die/Opening half width (" + value(die_opening_half_width)
-              + ") must exceed Die/Plan corner radius ("
+              + ") must be at least Die/Plan corner radius ("
               + value(die_corner_radius) + ")");
     require(die_opening_half_width > punch_half_width,
             "Die/Opening half width (" + value(die_opening_half_width)

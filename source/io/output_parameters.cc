@@ -36,9 +36,10 @@ namespace deepdraw
                         "15, 20",
                         Patterns::List(Patterns::Double(0., 1e6)),
                         "Final loads (values of t, mm) at which the "
-                        "thickness strain along OX and OD is written "
-                        "(thickness_OX_<travel>mm.csv, "
-                        "thickness_OD_<travel>mm.csv; runs with tools "
+                        "thickness strain along OX, OY and OD and the "
+                        "earing profile are written "
+                        "(thickness_OX_<travel>mm.csv, ..., "
+                        "earing_<travel>mm.csv; runs with tools "
                         "only); increments land on them, travels beyond "
                         "Process/Final load are ignored. Travels must give "
                         "different file names (10 significant digits).");

@@ -1,9 +1,9 @@
 #include <algorithm>
 #include <cmath>
-#include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/grid_tools.h>
+#include <deal.II/base/utilities.h>
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/problem/blank_geometry.h>
+#include <filesystem>
 
 namespace deepdraw
 {
@@ -16,6 +16,42 @@ namespace deepdraw
     BlankGeometry::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Geometry");
+      prm.declare_entry("Blank outline",
+                        "rectangle",
+                        Patterns::Selection("rectangle|circle|polygon|gmsh"),
+                        "In-plane shape of the blank (doc/user_guide.md "
+                        "§2.1): rectangle [0, Length] x [0, Width]; circle "
+                        "of Diameter about the origin; polygon of Outline "
+                        "file about the origin (star-shaped about it); "
+                        "gmsh: the quadrilaterals of Mesh file extruded "
+                        "through the thickness. Symmetry planes cut the "
+                        "circle and the polygon; the rectangle and the Gmsh "
+                        "mesh are the modelled part.");
+      prm.declare_entry("Diameter",
+                        "100",
+                        Patterns::Double(0., max_extent),
+                        "Diameter of the circular blank, mm (0 < Diameter "
+                        "<= 10000).");
+      prm.declare_entry("Outline file",
+                        "",
+                        Patterns::Anything(),
+                        "Blank outline = polygon: file of the outline "
+                        "corners, one 'x y' (mm) per line, '#' comments, "
+                        "closed implicitly; relative to the prm file's "
+                        "directory.");
+      prm.declare_entry("Mesh file",
+                        "",
+                        Patterns::Anything(),
+                        "Blank outline = gmsh: two-dimensional Gmsh mesh "
+                        "(.msh) of the modelled part of the blank in the "
+                        "plane z = 0, quadrilaterals only; relative to the "
+                        "prm file's directory.");
+      prm.declare_entry("Elements along radius",
+                        "12",
+                        Patterns::Integer(2, 10000),
+                        "Circle and polygon: elements along a radius of the "
+                        "disc mesh (2 to 10000); a quadrant has about 1.6 "
+                        "times as many along its arc.");
       // Upper bounds (D50): 10 m of blank, and a mesh whose memory is
       // estimated before it is made (memory_estimate.h).
       prm.declare_entry("Length",
@@ -67,9 +103,19 @@ namespace deepdraw
 
 
     void
-    BlankGeometry::parse_parameters(ParameterHandler &prm)
+    BlankGeometry::parse_parameters(ParameterHandler  &prm,
+                                    const std::string &input_directory)
     {
       prm.enter_subsection("Geometry");
+      const std::string outline_name = prm.get("Blank outline");
+      outline                  = outline_name == "circle"    ? Outline::circle
+                                 : outline_name == "polygon" ? Outline::polygon
+                                 : outline_name == "gmsh"    ? Outline::gmsh
+                                                          : Outline::rectangle;
+      diameter                 = prm.get_double("Diameter");
+      outline_file             = prm.get("Outline file");
+      mesh_file                = prm.get("Mesh file");
+      elements_along_radius    = prm.get_integer("Elements along radius");
       length                   = prm.get_double("Length");
       width                    = prm.get_double("Width");
       thickness                = prm.get_double("Thickness");
@@ -89,6 +135,46 @@ namespace deepdraw
           throw InputError("Geometry/" + std::string(name)
                            + " must be a positive length in mm (0 < " + name
                            + " <= 10000), got " + std::to_string(value));
+      read_outline(input_directory);
+    }
+
+
+    void
+    BlankGeometry::read_outline(const std::string &input_directory)
+    {
+      const auto resolve = [&](const std::string &file, const char *entry)
+      {
+        if (Utilities::trim(file).empty())
+          throw InputError(
+            std::string("Geometry/") + entry + " is empty; Blank outline = "
+            + (outline == Outline::polygon ? "polygon" : "gmsh") + " needs it");
+        return std::filesystem::path(file).is_absolute()
+                 ? file
+                 : (std::filesystem::path(input_directory) / file).string();
+      };
+      if (outline == Outline::rectangle)
+        return;
+      if (outline == Outline::gmsh)
+      {
+        mesh_file = resolve(mesh_file, "Mesh file");
+        read_plane_mesh();
+        return;
+      }
+      if (outline == Outline::circle)
+      {
+        if (!(diameter > 0.) || !(diameter <= max_extent))
+          throw InputError("Geometry/Diameter must be a positive length in "
+                           "mm (0 < Diameter <= 10000), got "
+                           + std::to_string(diameter));
+        shape = BlankOutline::circle(diameter);
+      }
+      else
+        shape = BlankOutline::read(resolve(outline_file, "Outline file"));
+      // The modelled part's extents (the scales of D50 and the check of
+      // prescribed displacements): the largest radius along each axis.
+      const double r = shape.max_radius();
+      length         = symmetry_plane_x ? r : 2. * r;
+      width          = symmetry_plane_y ? r : 2. * r;
     }
 
 
@@ -109,46 +195,36 @@ namespace deepdraw
     double
     BlankGeometry::n_cells() const
     {
-      // As a double: the product of three counts up to 1e5 overflows an
-      // unsigned int.
-      return double(elements_along_x) * elements_along_y
-             * layers_through_thickness;
+      return n_plane_cells() * layers_through_thickness;
     }
 
 
-    void
-    BlankGeometry::create_mesh(Triangulation<3>          &triangulation,
-                               std::vector<unsigned int> &vertex_column,
-                               std::vector<unsigned int> &vertex_layer) const
+    double
+    BlankGeometry::n_plane_cells() const
     {
-      const std::vector<unsigned int> repetitions
-        = {elements_along_x, elements_along_y, layers_through_thickness};
-      GridGenerator::subdivided_hyper_rectangle(triangulation,
-                                                repetitions,
-                                                Point<3>(0, 0, 0),
-                                                Point<3>(length,
-                                                         width,
-                                                         thickness),
-                                                /*colorize=*/true);
+      // As doubles: the product of counts up to 1e5 overflows an unsigned
+      // int.
+      if (outline == Outline::rectangle)
+        return double(elements_along_x) * elements_along_y;
+      if (outline == Outline::gmsh)
+        return plane_mesh ? plane_mesh->n_active_cells() : 0.;
+      const unsigned int quadrants
+        = (symmetry_plane_x ? 1 : 2) * (symmetry_plane_y ? 1 : 2);
+      const double m = disc_square_cells(elements_along_radius);
+      const double k = elements_along_radius - m;
+      return quadrants * (m * m + 2. * m * k);
+    }
 
-      const double hx       = length / elements_along_x;
-      const double hy       = width / elements_along_y;
-      const double hz       = thickness / layers_through_thickness;
-      const auto  &vertices = triangulation.get_vertices();
-      vertex_column.resize(vertices.size());
-      vertex_layer.resize(vertices.size());
-      for (unsigned int v = 0; v < vertices.size(); ++v)
-      {
-        const unsigned int i = std::lround(vertices[v][0] / hx);
-        const unsigned int j = std::lround(vertices[v][1] / hy);
-        vertex_column[v]     = i + j * (elements_along_x + 1);
-        vertex_layer[v]      = std::lround(vertices[v][2] / hz);
-      }
 
-      if (mesh_distortion > 0.)
-        GridTools::distort_random(mesh_distortion,
-                                  triangulation,
-                                  /*keep_boundary=*/true);
+    double
+    BlankGeometry::n_plane_vertices() const
+    {
+      if (outline == Outline::rectangle)
+        return double(elements_along_x + 1) * (elements_along_y + 1);
+      if (outline == Outline::gmsh)
+        return plane_mesh ? plane_mesh->n_used_vertices() : 0.;
+      // A quadrilateral mesh has about one vertex per cell, plus the rim.
+      return n_plane_cells() + 4. * elements_along_radius + 1.;
     }
   } // namespace problem
 } // namespace deepdraw

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_tools.h>
+#include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deepdraw/fe/hanging_node_constraints.h>
 #include <deepdraw/fe/selective_reduced_quadrature.h>
@@ -51,7 +52,7 @@ namespace deepdraw
         , fe_scalar(1)
         , scalar_dof_handler(triangulation)
     {
-      geometry.parse_parameters(prm);
+      geometry.parse_parameters(prm, input_directory);
       process_parameters.parse_parameters(prm);
       process_tables.parse_parameters(prm, geometry);
       prm.enter_subsection("Material");
@@ -97,25 +98,25 @@ namespace deepdraw
       setup_system();
       process_tables.set_up(contact,
                             process_parameters.final_load,
-                            initial_vertices,
-                            column_end_vertices);
+                            *sheet_thickness,
+                            initial_vertices);
     }
 
 
     void
     FormingProblem::setup_system()
     {
-      geometry.create_mesh(triangulation, vertex_column, vertex_layer);
+      geometry.create_mesh(triangulation);
       initial_vertices = triangulation.get_vertices();
-      column_end_vertices.resize((geometry.elements_along_x + 1)
-                                 * (geometry.elements_along_y + 1));
-      for (unsigned int v = 0; v < initial_vertices.size(); ++v)
-      {
-        if (vertex_layer[v] == 0)
-          column_end_vertices[vertex_column[v]][0] = v;
-        if (vertex_layer[v] == geometry.layers_through_thickness)
-          column_end_vertices[vertex_column[v]][1] = v;
-      }
+      // The mean in-plane element size of the blank (for the rectangle as
+      // before, to the bit); the contact augmentation keeps it on refined
+      // meshes (D82).
+      blank_element_size
+        = geometry.outline == BlankGeometry::Outline::rectangle
+            ? std::sqrt(geometry.length / geometry.elements_along_x
+                        * geometry.width / geometry.elements_along_y)
+            : std::sqrt(GridTools::volume(triangulation) / geometry.thickness
+                        / geometry.n_plane_cells());
       if (contact.active())
         contact.create_tools(square_cup_tool_parameters,
                              geometry.thickness,
@@ -232,14 +233,11 @@ namespace deepdraw
       types::global_dof_index n_unknowns = dof_handler.n_dofs();
       if (contact.active())
       {
-        const double element_size
-          = std::sqrt(geometry.length / geometry.elements_along_x
-                      * geometry.width / geometry.elements_along_y);
         n_unknowns += contact.create_pairs(face_vertices,
                                            vertex_dofs,
                                            dof_handler.n_dofs(),
                                            material_parameters.youngs_modulus,
-                                           element_size);
+                                           blank_element_size);
       }
 
       constrained_multipliers.clear();
@@ -273,6 +271,33 @@ namespace deepdraw
       system_rhs.reinit(n_unknowns);
       internal_force.reinit(n_unknowns);
       newton_unknowns.reinit(n_unknowns);
+      set_up_thickness_measurement();
+    }
+
+
+    void
+    FormingProblem::set_up_thickness_measurement()
+    {
+      // The thickness at every vertex is that at its initial (X, Y), found
+      // on the initial surfaces of the current mesh (D72); on a refined
+      // mesh the refined faces, hanging vertices included (D85).
+      sheet_thickness
+        = std::make_unique<SheetThickness>(triangulation, initial_vertices);
+      vertex_locations.assign(initial_vertices.size(),
+                              SheetThickness::Location());
+      for (const auto &cell : triangulation.active_cell_iterators())
+        for (const unsigned int v : cell->vertex_indices())
+        {
+          const Point<3> &X   = initial_vertices[cell->vertex_index(v)];
+          const auto location = sheet_thickness->locate(Point<2>(X[0], X[1]));
+          if (!location)
+            throw InputError("Geometry: the vertex at (" + std::to_string(X[0])
+                             + ", " + std::to_string(X[1])
+                             + ") is not over both the bottom and the top "
+                               "face of the sheet mesh");
+          vertex_locations[cell->vertex_index(v)] = *location;
+        }
+      set_up_thickness_profiles();
     }
 
 
@@ -418,16 +443,16 @@ namespace deepdraw
 
 
     const std::vector<double> &
-    FormingProblem::get_column_thickness() const
+    FormingProblem::get_vertex_thickness() const
     {
-      return column_thickness;
+      return vertex_thickness;
     }
 
 
-    const std::vector<unsigned int> &
-    FormingProblem::get_vertex_column() const
+    const SheetThickness &
+    FormingProblem::get_sheet_thickness() const
     {
-      return vertex_column;
+      return *sheet_thickness;
     }
 
 

@@ -9,7 +9,6 @@
 #include <deepdraw/io/output_file.h>
 #include <deepdraw/problem/forming_problem.h>
 #include <deepdraw/problem/nodal_surface_area.h>
-#include <deepdraw/problem/thickness_profiles.h>
 #include <filesystem>
 #include <iomanip>
 #include <sstream>
@@ -21,40 +20,52 @@ namespace deepdraw
     void
     FormingProblem::compute_thickness()
     {
-      // Thickness measured as a real distance (doc/user_guide.md §3): for every
-      // through-thickness column, (x_top - x_bottom) . n with n the sheet
-      // normal, the average of the outward normals of the top faces minus
-      // those of the bottom faces around the column.
-      const unsigned int n_columns
-        = (geometry.elements_along_x + 1) * (geometry.elements_along_y + 1);
-      std::vector<Tensor<1, 3>> normal(n_columns);
-      const auto               &vertices = triangulation.get_vertices();
+      // Thickness measured as a real distance (doc/theory.md §6): at every
+      // vertex's initial (X, Y), (x_top - x_bottom) . n with n the mean
+      // sheet normal there (SheetThickness).
+      const auto &vertices = triangulation.get_vertices();
+      sheet_thickness->update(vertices);
+      vertex_thickness.assign(vertices.size(), geometry.thickness);
       for (const auto &cell : triangulation.active_cell_iterators())
-        for (const auto &face : cell->face_iterators())
-          if (face->at_boundary()
-              && (face->boundary_id() == 4 || face->boundary_id() == 5))
-          {
-            Tensor<1, 3> n
-              = cross_product_3d(face->vertex(3) - face->vertex(0),
-                                 face->vertex(2) - face->vertex(1));
-            if (n * (face->center() - cell->center()) < 0.)
-              n = -n;
-            n /= n.norm();
-            const double sign = face->boundary_id() == 5 ? 1. : -1.;
-            // Vertices added by adaptive refinement belong to no column of
-            // the blank's mesh: the thickness is measured at the blank's
-            // columns only (TODO: the mesh-independent thickness
-            // measurement of issue 16 replaces this at the merge, D85).
-            for (const unsigned int v : face->vertex_indices())
-              if (face->vertex_index(v) < vertex_column.size())
-                normal[vertex_column[face->vertex_index(v)]] += sign * n;
-          }
-      column_thickness.resize(n_columns);
-      for (unsigned int c = 0; c < n_columns; ++c)
-        column_thickness[c] = std::abs((vertices[column_end_vertices[c][1]]
-                                        - vertices[column_end_vertices[c][0]])
-                                       * normal[c])
-                              / normal[c].norm();
+        for (const unsigned int v : cell->vertex_indices())
+        {
+          const unsigned int vertex = cell->vertex_index(v);
+          vertex_thickness[vertex]
+            = sheet_thickness->thickness(vertex_locations[vertex], vertices);
+        }
+    }
+
+
+    void
+    FormingProblem::set_up_thickness_profiles()
+    {
+      // Rays from the origin along x, y and the diagonal x = y, from where
+      // they enter the sheet to the outline, sampled where they cross a
+      // face edge (doc/user_guide.md §3.1).
+      thickness_profiles.clear();
+      const std::pair<const char *, Tensor<1, 2>> rays[]
+        = {{"OX", Tensor<1, 2>({1., 0.})},
+           {"OY", Tensor<1, 2>({0., 1.})},
+           {"OD", Tensor<1, 2>({std::sqrt(0.5), std::sqrt(0.5)})}};
+      for (const auto &[name, direction] : rays)
+      {
+        ThicknessProfile profile{name, {}};
+        for (const double s : sheet_thickness->ray_crossings(direction))
+          if (const auto location
+              = sheet_thickness->locate(Point<2>(s * direction)))
+            profile.points.emplace_back(s, *location);
+        thickness_profiles.push_back(profile);
+      }
+      // The rim: the outline, not the symmetry planes.
+      std::vector<types::boundary_id> rim_ids = {1, 3};
+      if (!geometry.symmetry_plane_x)
+        rim_ids.push_back(0);
+      if (!geometry.symmetry_plane_y)
+        rim_ids.push_back(2);
+      earing.set_up(triangulation,
+                    initial_vertices,
+                    rim_ids,
+                    material_parameters.rolling_direction_angle);
     }
 
 
@@ -164,6 +175,13 @@ namespace deepdraw
         tools_file.open(directory + "/tools.csv", tool_columns, resume);
 
         process_tables.open(directory, resume);
+        if (!profile_travels.empty())
+        {
+          std::vector<std::string> labels;
+          for (const double travel : profile_travels)
+            labels.push_back(io::OutputParameters::travel_label(travel));
+          EaringProfile::write_plot_script(directory, labels);
+        }
       }
       if (adaptivity_parameters.enabled)
         adaptivity_file.open(directory + "/adaptivity.csv",
@@ -221,32 +239,23 @@ namespace deepdraw
     void
     FormingProblem::write_thickness_profiles(const double travel)
     {
-      std::vector<double> strain(column_thickness.size());
-      for (unsigned int c = 0; c < strain.size(); ++c)
-        strain[c] = std::log(column_thickness[c] / geometry.thickness);
-      const std::string label = io::OutputParameters::travel_label(travel);
-      const std::pair<const char *, Profile> profiles[]
-        = {{"OX",
-            profile_along_x_axis(strain,
-                                 geometry.elements_along_x,
-                                 geometry.length)},
-           {"OD",
-            profile_along_diagonal(strain,
-                                   geometry.elements_along_x,
-                                   geometry.elements_along_y,
-                                   geometry.length,
-                                   geometry.width)}};
-      for (const auto &[name, profile] : profiles)
+      const std::string  label     = io::OutputParameters::travel_label(travel);
+      const std::string &directory = output_parameters.output_directory;
+      const auto        &vertices  = triangulation.get_vertices();
+      for (const ThicknessProfile &profile : thickness_profiles)
       {
         std::vector<std::vector<double>> rows;
-        for (const auto &[s0, value] : profile)
-          rows.push_back({s0, value});
-        io::write_csv_file_atomically(output_parameters.output_directory
-                                        + "/thickness_" + name + "_" + label
-                                        + "mm.csv",
+        for (const auto &[s0, location] : profile.points)
+          rows.push_back(
+            {s0,
+             std::log(sheet_thickness->thickness(location, vertices)
+                      / geometry.thickness)});
+        io::write_csv_file_atomically(directory + "/thickness_" + profile.name
+                                        + "_" + label + "mm.csv",
                                       {"s0_mm", "thickness_strain"},
                                       rows);
       }
+      earing.write(directory, label, vertices, process_tables.punch_motion());
     }
 
 
@@ -289,27 +298,13 @@ namespace deepdraw
           plastic_strain[cell] += point.state.equivalent_plastic_strain / n_q;
         }
 
-      // Thickness strain ln(t/t0) at every vertex of a column.
+      // Thickness strain ln(t/t0) at every vertex, measured at its initial
+      // (X, Y).
       Vector<double> thickness_strain(scalar_dof_handler.n_dofs());
-      // At a vertex added by adaptive refinement: interpolated from the
-      // columns of its parents among the blank's vertices (D85).
-      const auto column_strain = [&](const unsigned int vertex)
-      {
-        return std::log(column_thickness[vertex_column[vertex]]
-                        / geometry.thickness);
-      };
       for (const auto &cell : scalar_dof_handler.active_cell_iterators())
         for (const unsigned int v : cell->vertex_indices())
-        {
-          const unsigned int vertex = cell->vertex_index(v);
-          double             strain = 0.;
-          if (vertex < vertex_column.size())
-            strain = column_strain(vertex);
-          else
-            for (const auto &[blank, weight] : blank_vertex_parents[vertex])
-              strain += weight * column_strain(blank);
-          thickness_strain[cell->vertex_dof_index(v, 0)] = strain;
-        }
+          thickness_strain[cell->vertex_dof_index(v, 0)] = std::log(
+            vertex_thickness[cell->vertex_index(v)] / geometry.thickness);
 
       DataOut<3> data_out;
       data_out.attach_triangulation(triangulation);

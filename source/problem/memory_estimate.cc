@@ -45,8 +45,7 @@ namespace deepdraw
     double
     estimated_memory(const BlankGeometry &geometry, const unsigned int n_tools)
     {
-      const double nodes_per_face = double(geometry.elements_along_x + 1)
-                                    * (geometry.elements_along_y + 1);
+      const double nodes_per_face = geometry.n_plane_vertices();
       return bytes_of_program + bytes_per_cell * geometry.n_cells()
              + bytes_per_pair * n_tools * nodes_per_face;
     }
@@ -79,10 +78,14 @@ namespace deepdraw
       if (needed <= available)
         return;
       std::ostringstream text;
-      text << std::setprecision(3) << "Geometry: the mesh of "
-           << geometry.elements_along_x << " x " << geometry.elements_along_y
-           << " x " << geometry.layers_through_thickness << " = "
-           << geometry.n_cells() << " cells";
+      text << std::setprecision(3) << "Geometry: the mesh of ";
+      if (geometry.outline == BlankGeometry::Outline::rectangle)
+        text << geometry.elements_along_x << " x " << geometry.elements_along_y
+             << " x ";
+      else
+        text << geometry.n_plane_cells() << " x ";
+      text << geometry.layers_through_thickness << " = " << geometry.n_cells()
+           << " cells";
       if (n_tools > 0)
         text << " with " << n_tools << " tool(s)";
       text << " needs about " << needed / 1e9

@@ -29,15 +29,17 @@ namespace deepdraw
                         "punch_force.csv; empty: the first force-controlled "
                         "tool.");
       prm.declare_entry("Draw-in points",
-                        "DX: length, 0; DY: 0, width; DD: length, width",
+                        "DX: x axis; DY: y axis; DD: diagonal",
                         Patterns::Anything(),
                         "Points of the blank edge whose draw-in draw_in.csv "
                         "reports, 'NAME: X, Y; ...' with X, Y the initial "
                         "in-plane position in mm or the words length, "
-                        "width (Geometry): the draw-in is the decrease of "
-                        "the in-plane distance of the mid-thickness point "
-                        "of the column starting there to the cup axis "
-                        "x = y = 0; column NAME_mm.");
+                        "width (Geometry), or 'NAME: x axis', 'y axis', "
+                        "'diagonal': where the ray from the origin along x, "
+                        "y or x = y leaves the blank. The draw-in is the "
+                        "decrease of the in-plane distance of the "
+                        "mid-surface point there to the cup axis x = y = 0; "
+                        "column NAME_mm.");
       prm.leave_subsection();
     }
 
@@ -87,27 +89,42 @@ namespace deepdraw
         const auto colon = entry.find(':');
         const auto comma
           = entry.find(',', colon == std::string::npos ? 0 : colon);
-        if (colon == std::string::npos || comma == std::string::npos
-            || Utilities::trim(entry.substr(0, colon)).empty())
-          throw InputError(where + "'" + entry
-                           + "' is not of the form 'NAME: X, Y'");
         DrawInPoint point;
-        point.name = Utilities::trim(entry.substr(0, colon));
-        point.requested
-          = Point<2>(coordinate(entry.substr(colon + 1, comma - colon - 1),
-                                entry),
-                     coordinate(entry.substr(comma + 1), entry));
+        point.name
+          = Utilities::trim(entry.substr(0, std::min(colon, entry.size())));
+        const std::string where_on
+          = colon == std::string::npos
+              ? ""
+              : Utilities::trim(entry.substr(colon + 1));
+        const std::pair<const char *, Tensor<1, 2>> rays[]
+          = {{"x axis", Tensor<1, 2>({1., 0.})},
+             {"y axis", Tensor<1, 2>({0., 1.})},
+             {"diagonal", Tensor<1, 2>({std::sqrt(0.5), std::sqrt(0.5)})}};
+        for (const auto &[word, direction] : rays)
+          if (where_on == word)
+            point.ray = direction;
+        if (!point.ray)
+        {
+          if (colon == std::string::npos || comma == std::string::npos
+              || point.name.empty())
+            throw InputError(where + "'" + entry
+                             + "' is not of the form 'NAME: X, Y' or 'NAME: "
+                               "x axis' ('y axis', 'diagonal')");
+          point.requested
+            = Point<2>(coordinate(entry.substr(colon + 1, comma - colon - 1),
+                                  entry),
+                       coordinate(entry.substr(comma + 1), entry));
+        }
         draw_in_points.push_back(point);
       }
     }
 
 
     void
-    ProcessTables::set_up(
-      const ContactCoupling                          &contact,
-      const double                                    final_load,
-      const std::vector<Point<3>>                    &initial_vertices,
-      const std::vector<std::array<unsigned int, 2>> &column_ends)
+    ProcessTables::set_up(const ContactCoupling       &contact,
+                          const double                 final_load,
+                          const SheetThickness        &sheet,
+                          const std::vector<Point<3>> &initial_vertices)
     {
       tables_wanted = contact.active();
       if (!tables_wanted)
@@ -148,21 +165,32 @@ namespace deepdraw
       }
       for (DrawInPoint &point : draw_in_points)
       {
-        double best = std::numeric_limits<double>::max();
-        for (const auto &ends : column_ends)
+        if (point.ray)
         {
-          const Point<3> &X = initial_vertices[ends[0]];
-          const double    distance
-            = std::hypot(X[0] - point.requested[0], X[1] - point.requested[1]);
-          if (distance < best)
-          {
-            best                 = distance;
-            point.column_ends    = ends;
-            const Point<3> mid   = 0.5 * (X + initial_vertices[ends[1]]);
-            point.initial_radius = std::hypot(mid[0], mid[1]);
-          }
+          // Where the ray leaves the sheet: the last crossing of a face edge.
+          const std::vector<double> s = sheet.ray_crossings(*point.ray);
+          if (s.empty())
+            throw InputError("Process tables/Draw-in points: the ray of "
+                             + point.name + " does not meet the blank");
+          point.requested = Point<2>(s.back() * *point.ray);
         }
+        const auto location = sheet.locate(point.requested);
+        if (!location)
+          throw InputError("Process tables/Draw-in points: " + point.name + " ("
+                           + std::to_string(point.requested[0]) + ", "
+                           + std::to_string(point.requested[1])
+                           + ") is not on the blank");
+        point.location       = *location;
+        const Point<3> mid   = sheet.mid_surface(*location, initial_vertices);
+        point.initial_radius = std::hypot(mid[0], mid[1]);
       }
+    }
+
+
+    const Tensor<1, 3> &
+    ProcessTables::punch_motion() const
+    {
+      return punch_direction;
     }
 
 
@@ -208,8 +236,7 @@ namespace deepdraw
       for (const DrawInPoint &point : draw_in_points)
       {
         const Point<3> mid
-          = 0.5
-            * (vertices[point.column_ends[0]] + vertices[point.column_ends[1]]);
+          = SheetThickness::mid_surface(point.location, vertices);
         row.push_back(point.initial_radius - std::hypot(mid[0], mid[1]));
       }
       draw_in_file.add_row(row);

@@ -431,6 +431,73 @@ def run_time_cases(source):
     ]
 
 
+def msh(nodes, elements):
+    """A Gmsh 2.2 file; elements are (type, node numbers): 3 quadrangle,
+    2 triangle."""
+    lines = ["$MeshFormat", "2.2 0 8", "$EndMeshFormat", "$Nodes",
+             str(len(nodes))]
+    lines += ["%d %g %g 0" % (k + 1, x, y) for k, (x, y) in enumerate(nodes)]
+    lines += ["$EndNodes", "$Elements", str(len(elements))]
+    lines += ["%d %d 2 1 1 %s" % (k + 1, kind, " ".join(map(str, n)))
+              for k, (kind, n) in enumerate(elements)]
+    return "\n".join(lines + ["$EndElements"]) + "\n"
+
+
+def blank_file_cases(source):
+    """Outline and mesh files of Geometry/Blank outline (doc/user_guide.md
+    §2.1): each rejected naming the file (and line or cell), exit code 2."""
+    def blank(outline, entry, path, content, messages, name):
+        return dict(name=name, files={
+            "case.prm": CUP + sub("Geometry", "Blank outline", outline)
+            + sub("Geometry", entry, path), path: content}, exit=2,
+            messages=[path.split("/")[-1]] + list(messages))
+
+    def polygon(content, *messages, name):
+        return blank("polygon", "Outline file", "data/outline.txt", content,
+                     messages, name)
+
+    def gmsh(content, *messages, name):
+        return blank("gmsh", "Mesh file", "data/blank.msh", content, messages,
+                     name)
+
+    square = [(0, 0), (10, 0), (10, 10), (0, 10)]
+    return [
+        dict(name="valid_polygon", files={
+            "case.prm": CUP + sub("Geometry", "Blank outline", "polygon")
+            + sub("Geometry", "Outline file", "data/outline.txt"),
+            "data/outline.txt": "# square\n-60 -60\n60 -60\n60 60\n"
+                                "-60 60\n"}, args=["--check", "case.prm"],
+             exit=0),
+        dict(name="outline_file_missing", files={
+            "case.prm": CUP + sub("Geometry", "Blank outline", "polygon")
+            + sub("Geometry", "Outline file", "data/none.txt")}, exit=2,
+             messages=["none.txt"]),
+        dict(name="outline_file_not_given", files={
+            "case.prm": CUP + sub("Geometry", "Blank outline", "polygon")},
+             exit=2, messages=["Geometry/Outline file is empty"]),
+        polygon("0 -1\n1 abc\n", "outline.txt:2: expected two numbers",
+                name="outline_not_a_number"),
+        polygon("-1 -1\n1 1\n", "at least three points",
+                name="outline_two_points"),
+        polygon("-1 -1\n1 -1\n1 -1\n1 1\n", "outline.txt:3: the point "
+                "repeats", name="outline_repeated_point"),
+        polygon("-1 -1\n1 1\n1 -1\n-1 1\n", "outline.txt:3:",
+                "intersects itself", name="outline_self_intersecting"),
+        polygon("1 1\n2 1\n2 2\n1 2\n", "not star-shaped about the origin",
+                name="outline_origin_outside"),
+        dict(name="mesh_file_missing", files={
+            "case.prm": CUP + sub("Geometry", "Blank outline", "gmsh")
+            + sub("Geometry", "Mesh file", "data/none.msh")}, exit=2,
+             messages=["none.msh", "cannot open the mesh file"]),
+        gmsh("this is not a mesh\n", "not a usable two-dimensional Gmsh mesh",
+             name="mesh_not_msh"),
+        gmsh(msh(square, [(2, [1, 2, 3]), (2, [1, 3, 4])]),
+             "cell 1 is not a quadrilateral", name="mesh_of_triangles"),
+        gmsh(msh([(-10, 0), (0, 0), (0, 10), (-10, 10)], [(3, [1, 2, 3, 4])]),
+             "far side of a symmetry plane", name="mesh_beyond_symmetry_plane"),
+    ]
+
+
 CLASSES = {"files": files_cases, "command_line": command_line_cases,
            "expressions": expression_cases, "tool_files": tool_file_cases,
-           "run_time": run_time_cases}
+           "run_time": run_time_cases, "blank_files": blank_file_cases}

@@ -7,7 +7,9 @@
 // blank holder on the flange (flat face z = t + gap, inner contour = die
 // opening + 2 × shoulder radius, a free edge). The quarter model covers
 // x >= 0, y >= 0; its edges on x = 0 and y = 0 are symmetry edges.
-// Every normal points towards the sheet.
+// Every normal points towards the sheet. A plan corner radius equal to the
+// half width makes the punch or the die opening round (the cylindrical
+// cup, D76): the straight sides vanish and their patches are left out.
 #ifndef deepdraw_geometry_square_cup_tools_h
 #define deepdraw_geometry_square_cup_tools_h
 

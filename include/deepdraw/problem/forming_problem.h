@@ -36,9 +36,11 @@
 #include <deepdraw/problem/blank_geometry.h>
 #include <deepdraw/problem/checkpoint.h>
 #include <deepdraw/problem/contact_coupling.h>
+#include <deepdraw/problem/earing_profile.h>
 #include <deepdraw/problem/prescribed_displacements.h>
 #include <deepdraw/problem/process_parameters.h>
 #include <deepdraw/problem/process_tables.h>
+#include <deepdraw/problem/sheet_thickness.h>
 #include <deepdraw/problem/simulation_state.h>
 #include <deepdraw/solver/increment_control.h>
 #include <deepdraw/solver/linear_solver.h>
@@ -146,12 +148,14 @@ namespace deepdraw
       // Volume of the sheet in the current configuration (mm³).
       double
       sheet_volume() const;
-      // Current thickness of each through-thickness column.
+      // Current thickness at the initial in-plane position (X, Y) of every
+      // vertex (SheetThickness, doc/theory.md §6).
       const std::vector<double> &
-      get_column_thickness() const;
-      // For every vertex, the index of its column.
-      const std::vector<unsigned int> &
-      get_vertex_column() const;
+      get_vertex_thickness() const;
+      // The thickness measurement of the sheet (its vertex normals of the
+      // current configuration).
+      const SheetThickness &
+      get_sheet_thickness() const;
 
       // Newton history of the last increment: relative force residuals.
       const std::vector<double> &
@@ -221,6 +225,10 @@ namespace deepdraw
       // refinement).
       void
       setup_dofs();
+      // SheetThickness on the current mesh, every vertex located on it, and
+      // the profile and rim points (end of setup_dofs).
+      void
+      set_up_thickness_measurement();
       void
       add_hanging_node_constraints(
         AffineConstraints<double> &constraints) const;
@@ -324,9 +332,13 @@ namespace deepdraw
       write_vtu(double load);
       void
       write_increment_tables(double load);
-      // thickness_OX/OD_<travel>mm.csv at a requested travel.
+      // thickness_OX/OY/OD_<travel>mm.csv and earing_<travel>mm.csv at a
+      // requested travel.
       void
       write_thickness_profiles(double travel);
+      // The points of the thickness profiles and the rim.
+      void
+      set_up_thickness_profiles();
 
       // Wall time since the problem was constructed: the reported run time
       // includes the set-up (mesh, tools, pairs), which a tool of many
@@ -356,8 +368,6 @@ namespace deepdraw
       // Discretisation
       Triangulation<3>                                    triangulation;
       std::vector<Point<3>>                               initial_vertices;
-      std::vector<unsigned int>                           vertex_column;
-      std::vector<unsigned int>                           vertex_layer;
       FESystem<3>                                         fe;
       DoFHandler<3>                                       dof_handler;
       FE_Q<3>                                             fe_scalar;
@@ -367,11 +377,26 @@ namespace deepdraw
       std::vector<unsigned int>                           dof_component;
       std::vector<fe::CellGeometry>                       cell_geometry;
       std::array<std::vector<types::global_dof_index>, 6> face_dofs;
-      // Bottom and top vertex of every through-thickness column.
-      std::vector<std::array<unsigned int, 2>> column_end_vertices;
+      // Mean in-plane element size of the blank's mesh (contact
+      // augmentation, D34, D82).
+      double blank_element_size = 1.;
       // After adaptive refinement: for every vertex, the blank's vertices it
       // is interpolated from (empty before the first refinement).
       std::vector<fe::VertexParents> blank_vertex_parents;
+      // Thickness of the sheet at reference points, and where each
+      // vertex's initial (X, Y) lies on its surfaces.
+      std::unique_ptr<SheetThickness>       sheet_thickness;
+      std::vector<SheetThickness::Location> vertex_locations;
+      // The OX, OY, OD profiles: name, initial distance s0 from the origin
+      // and location of each point (doc/user_guide.md §3.1).
+      struct ThicknessProfile
+      {
+        std::string                                              name;
+        std::vector<std::pair<double, SheetThickness::Location>> points;
+      };
+      std::vector<ThicknessProfile> thickness_profiles;
+      // Rim of the blank for earing_<travel>mm.csv.
+      EaringProfile earing;
 
       // Constrained dofs with their prescribed displacement entry.
       std::vector<
@@ -411,7 +436,7 @@ namespace deepdraw
       solver::LinearSolver::Statistics reported_solver_statistics;
 
       // Results
-      std::vector<double> column_thickness;
+      std::vector<double> vertex_thickness;
       std::vector<double> residual_history;
       std::vector<double> contact_residual_history;
       unsigned int        contact_changes = 0;

@@ -11,6 +11,8 @@
 #include <deepdraw/io/csv_file.h>
 #include <deepdraw/problem/blank_geometry.h>
 #include <deepdraw/problem/contact_coupling.h>
+#include <deepdraw/problem/sheet_thickness.h>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,13 +33,19 @@ namespace deepdraw
 
       // After the tools and the mesh exist: finds the punch and the holder
       // (InputError if a tool named in the prm does not exist), the punch
-      // direction over the run (to final_load), and the through-thickness
-      // column of each draw-in point (the one starting nearest to it).
+      // direction over the run (to final_load), the points of the named
+      // directions (x axis, y axis, diagonal: where the ray from the origin
+      // leaves the sheet) and where each draw-in point lies on the sheet
+      // (InputError if off it).
       void
-      set_up(const ContactCoupling                          &contact,
-             double                                          final_load,
-             const std::vector<Point<3>>                    &initial_vertices,
-             const std::vector<std::array<unsigned int, 2>> &column_ends);
+      set_up(const ContactCoupling       &contact,
+             double                       final_load,
+             const SheetThickness        &sheet,
+             const std::vector<Point<3>> &initial_vertices);
+
+      // Unit direction of the punch motion (set_up; -z without a punch).
+      const Tensor<1, 3> &
+      punch_motion() const;
 
       // Opens the tables in directory (runs with tools only), appending to
       // them on a resumed run.
@@ -55,20 +63,24 @@ namespace deepdraw
       {
         std::string name;
         Point<2>    requested;
-        // Bottom and top vertex of its column, and the column's initial
-        // distance from the cup axis x = y = 0 at mid-thickness.
-        std::array<unsigned int, 2> column_ends{};
-        double                      initial_radius = 0.;
+        // Set instead of requested: the direction of a ray from the origin
+        // ("x axis", "y axis", "diagonal"), the point where it leaves the
+        // sheet.
+        std::optional<Tensor<1, 2>> ray;
+        // Where it lies on the sheet, and the initial distance of its
+        // mid-surface point from the cup axis x = y = 0.
+        SheetThickness::Location location;
+        double                   initial_radius = 0.;
       };
 
       std::string              punch_name  = "punch";
       std::string              holder_name = "";
       std::vector<DrawInPoint> draw_in_points;
 
-      bool         tables_wanted = false;
-      unsigned int punch_tool    = numbers::invalid_unsigned_int;
-      unsigned int holder_tool   = numbers::invalid_unsigned_int;
-      Tensor<1, 3> punch_direction;
+      bool         tables_wanted   = false;
+      unsigned int punch_tool      = numbers::invalid_unsigned_int;
+      unsigned int holder_tool     = numbers::invalid_unsigned_int;
+      Tensor<1, 3> punch_direction = Tensor<1, 3>({0., 0., -1.});
       io::CsvFile  punch_force_file;
       io::CsvFile  draw_in_file;
     };

@@ -1,0 +1,84 @@
+"""What the script tests (tests/<label>/*_test.py, tests/cad/square_cup_step.py)
+share: their command line, a fresh work directory, running deepdraw, and
+comparing CSV tables of two runs column by column.
+
+    import script_test  (after sys.path.insert of the tests directory)
+"""
+import argparse
+import csv
+import pathlib
+import shutil
+import subprocess
+import sys
+
+
+def start(description, extra_arguments=()):
+    """Parses --deepdraw, --source-dir, --work-dir (and extra_arguments:
+    (flag, keyword arguments of add_argument) pairs); empties the work
+    directory and links prm/ there to the sources' prm/, which the shipped
+    parameter files include relative to where deepdraw is started.
+    Returns (arguments, source directory, work directory)."""
+    parser = argparse.ArgumentParser(description=description)
+    parser.add_argument("--deepdraw", required=True)
+    parser.add_argument("--source-dir", required=True)
+    parser.add_argument("--work-dir", required=True)
+    for flag, options in extra_arguments:
+        parser.add_argument(flag, **options)
+    args = parser.parse_args()
+    args.deepdraw = str(pathlib.Path(args.deepdraw).resolve())
+    source = pathlib.Path(args.source_dir).resolve()
+    work = pathlib.Path(args.work_dir)
+    if work.exists():
+        shutil.rmtree(work)
+    work.mkdir(parents=True)
+    (work / "prm").symlink_to(source / "prm", target_is_directory=True)
+    return args, source, work
+
+
+def run(command, cwd, tail=None):
+    """Runs command in cwd, prints its output (the last `tail` characters)
+    and returns it; exits the test if the command fails."""
+    print("running:", " ".join(command), flush=True)
+    result = subprocess.run(command, cwd=cwd, stdout=subprocess.PIPE,
+                            stderr=subprocess.STDOUT, text=True)
+    print(result.stdout if tail is None else result.stdout[-tail:])
+    if result.returncode != 0:
+        sys.exit("FAILED: exit code %d" % result.returncode)
+    return result.stdout
+
+
+def table(path):
+    """(header, rows of floats) of a CSV table."""
+    with open(path) as f:
+        rows = list(csv.reader(f))
+    return rows[0], [[float(x) for x in row] for row in rows[1:] if row]
+
+
+def compare_tables(expected_directory, actual_directory, names, tolerance):
+    """Every column of the tables `names` of two runs: the largest
+    difference relative to the column's largest magnitude must be at most
+    tolerance. Prints each column; returns (failures, largest relative
+    difference)."""
+    failures = []
+    worst = 0.0
+    for name in names:
+        header, expected = table(pathlib.Path(expected_directory) / name)
+        header_actual, actual = table(pathlib.Path(actual_directory) / name)
+        if header_actual != header or len(actual) != len(expected):
+            failures.append("%s: %d rows %s, expected %d rows %s"
+                            % (name, len(actual), header_actual,
+                               len(expected), header))
+            continue
+        for j, column in enumerate(header):
+            scale = max(abs(row[j]) for row in expected) or 1.0
+            deviation = max(abs(a[j] - e[j]) for a, e in zip(actual, expected))
+            worst = max(worst, deviation / scale)
+            ok = deviation <= tolerance * scale
+            print("%s %-22s %-16s largest difference %.3e of %.4g over %d "
+                  "rows (tolerance %.0e relative)"
+                  % ("ok  " if ok else "FAIL", name, column, deviation / scale,
+                     scale, len(expected), tolerance))
+            if not ok:
+                failures.append("%s %s differs by %.3g relative"
+                                % (name, column, deviation / scale))
+    return failures, worst
