@@ -1,8 +1,11 @@
 // deepdraw --study (doc/user_guide.md §4.2, doc/decisions.md D41-D44).
 #include <algorithm>
+#include <cmath>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/tria.h>
 #include <deepdraw/app/study.h>
 #include <deepdraw/app/study_option.h>
 #include <deepdraw/app/study_plot.h>
@@ -126,13 +129,25 @@ namespace deepdraw
       // and whether it has a single layer. Left empty if the values do not
       // make a valid prm (the run then fails and says why).
       void
-      describe_case(ParameterHandler &prm, StudyCase &run, double &final_load)
+      describe_case(ParameterHandler  &prm,
+                    const std::string &prm_file,
+                    StudyCase         &run,
+                    double            &final_load)
       {
         problem::BlankGeometry geometry;
-        geometry.parse_parameters(prm);
-        const double size
-          = std::max(geometry.length / geometry.elements_along_x,
-                     geometry.width / geometry.elements_along_y);
+        geometry
+          .parse_parameters(prm, fs::absolute(prm_file).parent_path().string());
+        // The rectangle: the larger side of its cells; other outlines: the
+        // mean in-plane size of the mesh's cells.
+        double size = std::max(geometry.length / geometry.elements_along_x,
+                               geometry.width / geometry.elements_along_y);
+        if (geometry.outline != problem::BlankGeometry::Outline::rectangle)
+        {
+          Triangulation<3> mesh;
+          geometry.create_mesh(mesh);
+          size = std::sqrt(GridTools::volume(mesh) / geometry.thickness
+                           / geometry.n_plane_cells());
+        }
         run.aspect_ratio
           = size / (geometry.thickness / geometry.layers_through_thickness);
         if (geometry.layers_through_thickness == 1)
@@ -187,7 +202,7 @@ namespace deepdraw
         {
           for (const StudyVariable &variable : setup.variables)
             set_value(prm, variable, run);
-          describe_case(prm, case_, final_load);
+          describe_case(prm, setup.prm_file, case_, final_load);
           case_.overrides += tool_file_overrides(prm, setup.prm_file);
         }
         catch (const std::exception &)
