@@ -2,27 +2,20 @@
 script test (--deepdraw, --source-dir, --work-dir; tests/CMakeLists.txt), a
 fresh work directory with prm/ linked into it, one run of deepdraw on a
 parameter text, and CSV tables as rows of dictionaries."""
-import argparse
 import csv
 import pathlib
-import shutil
 import subprocess
+import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
+import script_test  # noqa: E402  (tests/script_test.py)
 
 
 def prepare():
     """Parses the arguments and makes an empty work directory (prm/ linked,
-    so that `include prm/...` works there); returns (args, work)."""
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--deepdraw", required=True)
-    parser.add_argument("--source-dir", required=True)
-    parser.add_argument("--work-dir", required=True)
-    args = parser.parse_args()
-    work = pathlib.Path(args.work_dir)
-    if work.exists():
-        shutil.rmtree(work)
-    work.mkdir(parents=True)
-    (work / "prm").symlink_to(pathlib.Path(args.source_dir).resolve() / "prm",
-                              target_is_directory=True)
+    so that `include prm/...` works there; tests/script_test.py); returns
+    (args, work)."""
+    args, _, work = script_test.start(__doc__)
     return args, work
 
 
