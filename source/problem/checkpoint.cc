@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <deepdraw/io/binary_stream.h>
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/problem/checkpoint.h>
 #include <filesystem>
@@ -14,20 +15,20 @@ namespace deepdraw
     {
       constexpr char tag[] = "deepdraw-checkpoint-1";
 
+      constexpr char source[] = "the file";
+
       template <typename T>
       void
       put(std::ostream &stream, const T &value)
       {
-        stream.write(reinterpret_cast<const char *>(&value), sizeof(T));
+        io::write_value(stream, value);
       }
 
       template <typename T>
       void
       get(std::istream &stream, T &value)
       {
-        stream.read(reinterpret_cast<char *>(&value), sizeof(T));
-        if (!stream)
-          throw std::runtime_error("the file ends early");
+        io::read_value(stream, value, source);
       }
 
       void
@@ -45,9 +46,7 @@ namespace deepdraw
         if (n > (std::size_t(1) << 32))
           throw std::runtime_error("a text block is too long");
         std::string text(n, '\0');
-        stream.read(text.data(), n);
-        if (!stream)
-          throw std::runtime_error("the file ends early");
+        io::read_bytes(stream, text.data(), n, source);
         return text;
       }
 

@@ -1,3 +1,4 @@
+#include <deepdraw/io/binary_stream.h>
 #include <deepdraw/problem/simulation_state.h>
 #include <istream>
 #include <ostream>
@@ -14,20 +15,20 @@ namespace deepdraw
       // counts, so that a truncated or foreign stream is detected.
       constexpr char tag[] = "deepdraw-state-3";
 
+      constexpr char source[] = "simulation state: the stream";
+
       template <typename T>
       void
       put(std::ostream &stream, const T &value)
       {
-        stream.write(reinterpret_cast<const char *>(&value), sizeof(T));
+        io::write_value(stream, value);
       }
 
       template <typename T>
       void
       get(std::istream &stream, T &value)
       {
-        stream.read(reinterpret_cast<char *>(&value), sizeof(T));
-        if (!stream)
-          throw std::runtime_error("simulation state: the stream ends early");
+        io::read_value(stream, value, source);
       }
 
       void
@@ -50,9 +51,7 @@ namespace deepdraw
       void
       get_values(std::istream &stream, double *values, const std::size_t n)
       {
-        stream.read(reinterpret_cast<char *>(values), n * sizeof(double));
-        if (!stream)
-          throw std::runtime_error("simulation state: the stream ends early");
+        io::read_bytes(stream, values, n * sizeof(double), source);
       }
 
       // The doubles of one quadrature point: stress, back stress (6 + 6
@@ -185,17 +184,13 @@ namespace deepdraw
       enhanced_parameters.resize(get_count(stream));
       for (fe::EnhancedParameters &cell : enhanced_parameters)
       {
-        stream.read(reinterpret_cast<char *>(&cell), sizeof(cell));
-        if (!stream)
-          throw std::runtime_error("simulation state: the stream ends early");
+        io::read_bytes(stream, &cell, sizeof(cell), source);
       }
       get(stream, next_increment);
       for (auto *bytes : {&contact.pair_open, &contact.pair_status})
       {
         bytes->resize(get_count(stream));
-        stream.read(reinterpret_cast<char *>(bytes->data()), bytes->size());
-        if (!stream)
-          throw std::runtime_error("simulation state: the stream ends early");
+        io::read_bytes(stream, bytes->data(), bytes->size(), source);
       }
       contact.tool_position.resize(get_count(stream));
       get_values(stream,
@@ -211,10 +206,10 @@ namespace deepdraw
         if (n_cells > (std::size_t(1) << 32))
           throw std::runtime_error("simulation state: bad refinement block");
         cycle.resize(n_cells);
-        stream.read(reinterpret_cast<char *>(cycle.data()),
-                    cycle.size() * sizeof(cycle[0]));
-        if (!stream)
-          throw std::runtime_error("simulation state: the stream ends early");
+        io::read_bytes(stream,
+                       cycle.data(),
+                       cycle.size() * sizeof(cycle[0]),
+                       source);
       }
     }
   } // namespace problem
