@@ -5,26 +5,17 @@ cut back, and since no cut-back can make a jump shorter, the run must stop
 with exit code 3 naming the tool, keep the tables of the converged
 increments whole (every row complete, the last one before the jump) and
 leave a checkpoint (D56)."""
-import argparse
 import csv
 import pathlib
-import shutil
 import subprocess
 import sys
 
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
+import script_test  # noqa: E402  (tests/script_test.py)
+
 
 def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--deepdraw", required=True)
-    parser.add_argument("--source-dir", required=True)
-    parser.add_argument("--work-dir", required=True)
-    args = parser.parse_args()
-    work = pathlib.Path(args.work_dir)
-    if work.exists():
-        shutil.rmtree(work)
-    work.mkdir(parents=True)
-    (work / "prm").symlink_to(pathlib.Path(args.source_dir).resolve() / "prm",
-                              target_is_directory=True)
+    args, _, work = script_test.start(__doc__)
     prm = work / "jump.prm"
     prm.write_text("""include prm/square_cup.prm
 subsection Geometry

@@ -9,15 +9,16 @@ state, so every CSV value and every VTU byte must be identical (D55), apart
 from the columns that are wall times (statistics.csv *_s) and the date line
 deal.II writes into each VTU file. The tolerance is therefore zero.
 """
-import argparse
 import csv
 import os
 import pathlib
-import shutil
 import signal
 import subprocess
 import sys
 import time
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
+import script_test  # noqa: E402  (tests/script_test.py)
 
 PRM = pathlib.Path(__file__).with_name("short_cup.prm")
 
@@ -97,17 +98,7 @@ def compare(reference, resumed, label):
 
 
 def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("--deepdraw", required=True)
-    parser.add_argument("--source-dir", required=True)
-    parser.add_argument("--work-dir", required=True)
-    args = parser.parse_args()
-    work = pathlib.Path(args.work_dir)
-    if work.exists():
-        shutil.rmtree(work)
-    work.mkdir(parents=True)
-    (work / "prm").symlink_to(pathlib.Path(args.source_dir).resolve() / "prm",
-                              target_is_directory=True)
+    args, _, work = script_test.start(__doc__)
     failures = []
 
     reference = work / "uninterrupted"
