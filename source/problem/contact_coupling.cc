@@ -142,6 +142,24 @@ namespace deepdraw
     }
 
 
+    std::vector<solver::MultiplierBlock>
+    ContactCoupling::multiplier_blocks() const
+    {
+      std::vector<solver::MultiplierBlock> blocks;
+      blocks.reserve(pairs.size());
+      for (const Pair &pair : pairs)
+      {
+        solver::MultiplierBlock block;
+        block.displacement = pair.u_dofs;
+        for (unsigned int c = 0; c < 3; ++c)
+          block.multiplier[c] = pair.first_multiplier + c;
+        block.augmentation = pair.augmentation;
+        blocks.push_back(block);
+      }
+      return blocks;
+    }
+
+
     void
     ContactCoupling::start_increment(const double old_load,
                                      const double new_load)

@@ -268,6 +268,14 @@ namespace deepdraw
       contact.add_sparsity(dsp);
       sparsity_pattern.copy_from(dsp);
       system_matrix.reinit(sparsity_pattern);
+      std::vector<bool> constrained(n_unknowns, false);
+      for (const auto &line : homogeneous_constraints.get_lines())
+        constrained[line.index] = true;
+      linear_solver->set_multiplier_blocks(sparsity_pattern,
+                                           dof_handler.n_dofs(),
+                                           contact.multiplier_blocks(),
+                                           contact.tool_position_unknowns(),
+                                           constrained);
       system_rhs.reinit(n_unknowns);
       internal_force.reinit(n_unknowns);
       newton_unknowns.reinit(n_unknowns);

@@ -36,6 +36,15 @@ namespace deepdraw
                         "worse fill-reducing ordering and a new analysis "
                         "whenever the open set changes: 13 % slower on the "
                         "square cup; doc/decisions.md D60, D64).");
+      prm.declare_entry(
+        "Condense contact multipliers",
+        "true",
+        Patterns::Bool(),
+        "Eliminate the contact forces exactly before the factorisation: "
+        "the factorised matrix has the displacements only, bordered by the "
+        "positions of force-controlled tools, and the Newton step is the "
+        "same (doc/decisions.md D90). Nodes touching two tools at once "
+        "fall back to the whole system for that solve.");
       prm.leave_subsection();
     }
 
@@ -44,8 +53,9 @@ namespace deepdraw
     LinearSolverParameters::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Linear solver");
-      type                = prm.get("Type");
-      leave_out_decoupled = prm.get_bool("Leave out decoupled unknowns");
+      type                 = prm.get("Type");
+      leave_out_decoupled  = prm.get_bool("Leave out decoupled unknowns");
+      condense_multipliers = prm.get_bool("Condense contact multipliers");
       prm.leave_subsection();
     }
 
@@ -336,6 +346,7 @@ namespace deepdraw
     LinearSolver::LinearSolver(const LinearSolverParameters &parameters)
         : parameters(parameters)
         , implementation(std::make_unique<Implementation>())
+        , condensed_implementation(std::make_unique<Implementation>())
     {
     }
 
@@ -346,17 +357,51 @@ namespace deepdraw
     void
     LinearSolver::reset_reduction()
     {
-      implementation->reduction_reset = true;
-      implementation->umfpack.forget_analysis();
+      for (Implementation *data :
+           {implementation.get(), condensed_implementation.get()})
+      {
+        data->reduction_reset = true;
+        data->umfpack.forget_analysis();
+      }
     }
 
 
-    const LinearSolver::Statistics &
+    LinearSolver::Statistics
     LinearSolver::statistics() const
     {
-      implementation->statistics.symbolic_analyses
-        = implementation->umfpack.n_symbolic_analyses();
-      return implementation->statistics;
+      // Both systems together (the condensed one and the whole one).
+      Statistics total = solve_statistics;
+      for (const Implementation *data :
+           {implementation.get(), condensed_implementation.get()})
+      {
+        total.factorizations += data->statistics.factorizations;
+        total.reductions += data->statistics.reductions;
+        total.numeric_factorizations += data->statistics.numeric_factorizations;
+        total.symbolic_analyses += data->umfpack.n_symbolic_analyses();
+      }
+      return total;
+    }
+
+
+    void
+    LinearSolver::set_multiplier_blocks(
+      const SparsityPattern                      &pattern,
+      const types::global_dof_index               n_displacements,
+      const std::vector<MultiplierBlock>         &blocks,
+      const std::vector<types::global_dof_index> &tool_positions,
+      const std::vector<bool>                    &constrained)
+    {
+      if (!parameters.condense_multipliers || blocks.empty())
+      {
+        condensation.reset();
+        return;
+      }
+      condensation = std::make_unique<MultiplierCondensation>();
+      condensation->initialize(pattern,
+                               n_displacements,
+                               blocks,
+                               tool_positions,
+                               constrained);
     }
 
 
@@ -367,8 +412,41 @@ namespace deepdraw
                         const std::vector<types::global_dof_index> &bordered,
                         const std::vector<types::global_dof_index> &decoupled)
     {
-      Implementation               &data = *implementation;
-      const types::global_dof_index n    = matrix.m();
+      solve_statistics.unknowns = matrix.m();
+      if (condensation != nullptr && condensation->condense(matrix, rhs))
+      {
+        // The multipliers eliminated exactly (D90): the factorised matrix
+        // is the displacement block, bordered by the tool positions.
+        Implementation &condensed = *condensed_implementation;
+        Vector<double>  condensed_solution;
+        solve_with(condensed,
+                   condensation->matrix(),
+                   condensation->rhs(),
+                   condensed_solution,
+                   condensation->condensed_tool_positions(),
+                   {});
+        condensation->expand(matrix, rhs, condensed_solution, solution);
+        ++solve_statistics.condensed_solves;
+        solve_statistics.factorized_unknowns
+          = condensed.statistics.factorized_unknowns;
+        return;
+      }
+      solve_with(*implementation, matrix, rhs, solution, bordered, decoupled);
+      solve_statistics.factorized_unknowns
+        = implementation->statistics.factorized_unknowns;
+    }
+
+
+    void
+    LinearSolver::solve_with(
+      Implementation                             &data,
+      const SparseMatrix<double>                 &matrix,
+      const Vector<double>                       &rhs,
+      Vector<double>                             &solution,
+      const std::vector<types::global_dof_index> &bordered,
+      const std::vector<types::global_dof_index> &decoupled)
+    {
+      const types::global_dof_index n = matrix.m();
       ++data.statistics.factorizations;
       data.statistics.unknowns = n;
       try

@@ -25,6 +25,7 @@
 #include <deepdraw/geometry/rigid_tool.h>
 #include <deepdraw/geometry/square_cup_tools.h>
 #include <deepdraw/problem/simulation_state.h>
+#include <deepdraw/solver/multiplier_condensation.h>
 #include <memory>
 #include <string>
 #include <vector>
@@ -122,6 +123,10 @@ namespace deepdraw
       // carries that force, and is constrained to zero by the caller.
       std::vector<std::pair<types::global_dof_index, types::global_dof_index>>
       multiplier_partners() const;
+      // The unknowns of every pair, for the exact elimination of the
+      // multipliers (solver::MultiplierCondensation, D90).
+      std::vector<solver::MultiplierBlock>
+      multiplier_blocks() const;
 
       // Places the displacement-controlled tools at load t_new and
       // remembers where every tool was at t_old.

@@ -6,6 +6,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
+#include <deepdraw/solver/multiplier_condensation.h>
 #include <memory>
 #include <string>
 
@@ -22,6 +23,9 @@ namespace deepdraw
       // constrained dofs) may be left out of the factorisation (D60); off
       // by default, it was slower (D64).
       bool leave_out_decoupled = false;
+      // The contact multipliers are eliminated exactly before the
+      // factorisation (D90).
+      bool condense_multipliers = true;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -60,6 +64,20 @@ namespace deepdraw
             const std::vector<types::global_dof_index> &bordered  = {},
             const std::vector<types::global_dof_index> &decoupled = {});
 
+      // The structure of the contact pairs of the systems solve() will be
+      // given (MultiplierCondensation::initialize): with
+      // `Condense contact multipliers`, solve() then factorises the
+      // condensed system whenever it can and falls back to the whole one
+      // (then `bordered` and `decoupled` apply) when not. Call again when
+      // the pattern changes.
+      void
+      set_multiplier_blocks(
+        const SparsityPattern                      &pattern,
+        types::global_dof_index                     n_displacements,
+        const std::vector<MultiplierBlock>         &blocks,
+        const std::vector<types::global_dof_index> &tool_positions,
+        const std::vector<bool>                    &constrained);
+
       // The next solve starts afresh: it leaves out exactly the decoupled
       // unknowns it is given and analyses the pattern anew (ordering),
       // whatever the last one did. Called at the start of each increment,
@@ -79,14 +97,29 @@ namespace deepdraw
         unsigned int reductions             = 0;
         unsigned int symbolic_analyses      = 0;
         unsigned int numeric_factorizations = 0;
+        // Solves of the condensed system (D90); the rest were whole.
+        unsigned int condensed_solves = 0;
       };
-      const Statistics &
+      Statistics
       statistics() const;
 
     private:
       struct Implementation;
-      LinearSolverParameters          parameters;
-      std::unique_ptr<Implementation> implementation;
+      void
+      solve_with(Implementation                             &data,
+                 const SparseMatrix<double>                 &matrix,
+                 const Vector<double>                       &rhs,
+                 Vector<double>                             &solution,
+                 const std::vector<types::global_dof_index> &bordered,
+                 const std::vector<types::global_dof_index> &decoupled);
+
+      LinearSolverParameters parameters;
+      // The whole system's factorisation and that of the condensed one,
+      // each with its own pattern and ordering.
+      std::unique_ptr<Implementation>         implementation;
+      std::unique_ptr<Implementation>         condensed_implementation;
+      std::unique_ptr<MultiplierCondensation> condensation;
+      Statistics                              solve_statistics;
     };
   } // namespace solver
 } // namespace deepdraw
