@@ -70,12 +70,17 @@ namespace deepdraw
                         "cells stay at most this many.");
       prm.declare_entry("Indicator",
                         "plastic strain jump",
-                        Patterns::Selection("plastic strain jump|region"),
+                        Patterns::Selection(
+                          "plastic strain jump|tool curvature|region"),
                         "Which cells are refined: 'plastic strain jump' "
                         "those whose cell-average equivalent plastic strain "
                         "differs from a face neighbour's by more than Jump "
-                        "threshold; 'region' those whose centre in the "
-                        "initial configuration lies in the box Region "
+                        "threshold; 'tool curvature' the columns through the "
+                        "thickness under a curved part of a tool (within one "
+                        "sheet thickness of it) whose in-plane size times "
+                        "the tool's curvature exceeds Curvature threshold, "
+                        "so before they bend; 'region' those whose centre in "
+                        "the initial configuration lies in the box Region "
                         "minimum..Region maximum (doc/theory.md §8.1).");
       prm.declare_entry("Jump threshold",
                         "0.02",
@@ -83,6 +88,13 @@ namespace deepdraw
                         "Indicator = plastic strain jump: the jump of the "
                         "equivalent plastic strain between neighbouring "
                         "cells above which both are refined (0 to 10).");
+      prm.declare_entry("Curvature threshold",
+                        "0.25",
+                        Patterns::Double(0.001, 10.),
+                        "Indicator = tool curvature: refine while a cell's "
+                        "in-plane size h exceeds this fraction of the tool "
+                        "radius R it lies on (h/R, 0.001 to 10; 0.25: four "
+                        "elements per radius length).");
       prm.declare_entry("Region minimum",
                         "0, 0, 0",
                         Patterns::Anything(),
@@ -108,15 +120,16 @@ namespace deepdraw
     AdaptivityParameters::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Adaptivity");
-      enabled        = prm.get_bool("Enabled");
-      interval       = prm.get_integer("Refinement interval");
-      maximum_level  = prm.get_integer("Maximum level");
-      maximum_cells  = prm.get_integer("Maximum number of cells");
-      indicator      = prm.get("Indicator");
-      jump_threshold = prm.get_double("Jump threshold");
-      region_min     = parse_point(prm.get("Region minimum"), "Region minimum");
-      region_max     = parse_point(prm.get("Region maximum"), "Region maximum");
-      refinement     = prm.get("Refinement");
+      enabled             = prm.get_bool("Enabled");
+      interval            = prm.get_integer("Refinement interval");
+      maximum_level       = prm.get_integer("Maximum level");
+      maximum_cells       = prm.get_integer("Maximum number of cells");
+      indicator           = prm.get("Indicator");
+      jump_threshold      = prm.get_double("Jump threshold");
+      curvature_threshold = prm.get_double("Curvature threshold");
+      region_min = parse_point(prm.get("Region minimum"), "Region minimum");
+      region_max = parse_point(prm.get("Region maximum"), "Region maximum");
+      refinement = prm.get("Refinement");
       prm.leave_subsection();
     }
 

@@ -25,17 +25,34 @@ namespace deepdraw
           || state.increment_number % parameters.interval != 0)
         return true;
       Timer timer;
-      // Region: 1 inside the box; plastic strain jump: the jump itself.
-      const bool                region = parameters.indicator == "region";
-      const std::vector<double> indicator
-        = region ? region_indicator(triangulation,
-                                    initial_vertices,
-                                    parameters.region_min,
-                                    parameters.region_max)
-                 : plastic_strain_jump(triangulation, state.history);
+      // Region: 1 inside the box; plastic strain jump: the jump itself;
+      // tool curvature: h kappa (D94).
+      std::vector<double> indicator;
+      double              threshold = parameters.jump_threshold;
+      if (parameters.indicator == "region")
+      {
+        indicator = region_indicator(triangulation,
+                                     initial_vertices,
+                                     parameters.region_min,
+                                     parameters.region_max);
+        threshold = 0.5;
+      }
+      else if (parameters.indicator == "tool curvature")
+      {
+        std::vector<unsigned int> sheet_faces;
+        for (const ToolDefinition &tool : contact.tool_definitions())
+          sheet_faces.push_back(tool.sheet_face);
+        indicator = tool_curvature_indicator(triangulation,
+                                             contact.tools(),
+                                             sheet_faces,
+                                             geometry.thickness);
+        threshold = parameters.curvature_threshold;
+      }
+      else
+        indicator = plastic_strain_jump(triangulation, state.history);
       if (flag_cells_for_refinement(triangulation,
                                     indicator,
-                                    region ? 0.5 : parameters.jump_threshold,
+                                    threshold,
                                     parameters)
           == 0)
         return true;

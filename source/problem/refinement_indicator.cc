@@ -57,6 +57,81 @@ namespace deepdraw
     }
 
 
+    namespace
+    {
+      // h_K kappa of a cell's face on the sheet surface against one tool
+      // (0 if no vertex of it is within distance of the tool).
+      double
+      face_curvature_ratio(const Triangulation<3>::face_iterator &face,
+                           const geometry::RigidTool             &tool,
+                           const double                           distance)
+      {
+        double kappa = 0.;
+        for (const unsigned int v : face->vertex_indices())
+        {
+          geometry::ProjectionResult projection;
+          if (tool.project(face->vertex(v), projection, distance)
+              && !projection.on_free_edge
+              && std::abs(projection.gap) <= distance)
+            kappa = std::max({kappa,
+                              projection.principal_curvatures[0],
+                              projection.principal_curvatures[1]});
+        }
+        // Vertices 0-1, 2-3, 0-2, 1-3 are the edges of a quadrilateral.
+        double h = 0.;
+        for (const auto &[a, b] : {std::pair<unsigned int, unsigned int>{0, 1},
+                                   {2, 3},
+                                   {0, 2},
+                                   {1, 3}})
+          h = std::max(h, face->vertex(a).distance(face->vertex(b)));
+        return h * kappa;
+      }
+    } // namespace
+
+
+    std::vector<double>
+    tool_curvature_indicator(const Triangulation<3>                 &mesh,
+                             const std::vector<geometry::RigidTool> &tools,
+                             const std::vector<unsigned int> &sheet_faces,
+                             const double                     distance)
+    {
+      std::vector<double> ratio(mesh.n_active_cells(), 0.);
+      for (const auto &cell : mesh.active_cell_iterators())
+        for (const unsigned int f : {4u, 5u})
+          if (cell->at_boundary(f))
+            for (unsigned int k = 0; k < tools.size(); ++k)
+              if (cell->face(f)->boundary_id() == sheet_faces[k])
+              {
+                double &value = ratio[cell->active_cell_index()];
+                value         = std::max(value,
+                                 face_curvature_ratio(cell->face(f),
+                                                      tools[k],
+                                                      distance));
+              }
+      // Through the thickness: the largest value of the column, exchanged
+      // across the z faces until nothing changes. Every face between two
+      // active cells is seen from the finer side, whose neighbour across it
+      // is active (as in plastic_strain_jump).
+      for (bool changed = true; changed;)
+      {
+        changed = false;
+        for (const auto &cell : mesh.active_cell_iterators())
+          for (const unsigned int f : {4u, 5u})
+            if (!cell->at_boundary(f) && cell->neighbor(f)->is_active())
+            {
+              double &a = ratio[cell->active_cell_index()];
+              double &b = ratio[cell->neighbor(f)->active_cell_index()];
+              if (a != b)
+              {
+                a = b   = std::max(a, b);
+                changed = true;
+              }
+            }
+      }
+      return ratio;
+    }
+
+
     unsigned int
     flag_cells_for_refinement(Triangulation<3>           &mesh,
                               const std::vector<double>  &indicator,

@@ -26,11 +26,15 @@ namespace deepdraw
       unsigned int maximum_level = 2;
       // No refinement that would make more active cells than this.
       unsigned int maximum_cells = 100000;
-      // "plastic strain jump" or "region" (refinement_indicator.h).
+      // "plastic strain jump", "tool curvature" or "region"
+      // (refinement_indicator.h).
       std::string indicator = "plastic strain jump";
       // Plastic strain jump: refine a cell whose cell-average equivalent
       // plastic strain differs from a face neighbour's by more than this.
       double jump_threshold = 0.02;
+      // Tool curvature: refine a cell within one sheet thickness of a tool
+      // whose in-plane size times the tool's curvature there exceeds this.
+      double curvature_threshold = 0.25;
       // Region: refine the cells whose centre in the initial configuration
       // lies in the box [region_min, region_max] (mm).
       Point<3> region_min;

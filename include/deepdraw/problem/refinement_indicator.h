@@ -6,6 +6,7 @@
 
 #include <deal.II/grid/tria.h>
 #include <deepdraw/fe/quadrature_point_update.h>
+#include <deepdraw/geometry/rigid_tool.h>
 #include <deepdraw/problem/adaptivity_parameters.h>
 #include <vector>
 
@@ -29,6 +30,22 @@ namespace deepdraw
                      const std::vector<Point<3>> &initial_vertices,
                      const Point<3>              &low,
                      const Point<3>              &high);
+
+    // Per active cell: h_K kappa, its in-plane size h_K (longest edge of its
+    // face on the sheet surface, current configuration) times the largest
+    // convex principal curvature kappa of a tool at the foot points of that
+    // face's vertices, over the tools acting on that surface (sheet_faces:
+    // the boundary id, 4 bottom or 5 top, of each tool) and the vertices
+    // closer to the tool than `distance`; 0 where no tool is that close or
+    // the tool is flat there. Carried to every cell of the column through
+    // the thickness (faces 4 and 5 of the blank's cells are its bottom and
+    // top), so that the whole column is refined. The mesh is in the current
+    // configuration and the tools at their current placement.
+    std::vector<double>
+    tool_curvature_indicator(const Triangulation<3>                 &mesh,
+                             const std::vector<geometry::RigidTool> &tools,
+                             const std::vector<unsigned int> &sheet_faces,
+                             double                           distance);
 
     // Sets the refine flag (parameters.refinement_case()) of the cells whose
     // indicator exceeds threshold and whose level is below the maximum,
