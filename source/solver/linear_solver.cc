@@ -35,7 +35,10 @@ namespace deepdraw
                         "dofs (the same solution, a smaller system, but a "
                         "worse fill-reducing ordering and a new analysis "
                         "whenever the open set changes: 13 % slower on the "
-                        "square cup; doc/decisions.md D60, D64).");
+                        "square cup; doc/decisions.md D60, D64). Applies "
+                        "to the whole system only: with Condense contact "
+                        "multipliers it is used for the solves that fall "
+                        "back to the whole system.");
       prm.declare_entry(
         "Condense contact multipliers",
         "true",
