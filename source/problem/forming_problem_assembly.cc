@@ -143,15 +143,17 @@ namespace deepdraw
 
       // Contact forces and their constraints, after the elements so that
       // the assembly time excludes the contact search.
+      last_assembly_changes = 0;
       if (contact.active())
-        contact_changes
-          += contact.assemble(triangulation.get_vertices(),
-                              du,
-                              constraints,
-                              assemble_matrix ? &system_matrix : nullptr,
-                              system_rhs,
-                              target_load,
-                              &constraints == &predictor_constraints);
+        last_assembly_changes
+          = contact.assemble(triangulation.get_vertices(),
+                             du,
+                             constraints,
+                             assemble_matrix ? &system_matrix : nullptr,
+                             system_rhs,
+                             target_load,
+                             &constraints == &predictor_constraints);
+      contact_changes += last_assembly_changes;
 
       switch (static_cast<fe::ElementStatus>(worst_status.load()))
       {

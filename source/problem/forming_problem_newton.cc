@@ -186,6 +186,13 @@ namespace deepdraw
     }
 
 
+    unsigned int
+    FormingProblem::state_changes() const
+    {
+      return last_assembly_changes;
+    }
+
+
     double
     FormingProblem::correction_norm(const Vector<double> &correction) const
     {

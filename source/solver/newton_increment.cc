@@ -213,6 +213,14 @@ namespace deepdraw
         if (system.merit() <= (1. - 1e-4 * step) * merit_now
             || merit_trial >= parameters.line_search_steps)
           break;
+        // The full step switches only a few contact pairs: the merit
+        // rises because they switch, and a shorter step would switch them
+        // back; take it whole (doc/decisions.md D91).
+        const unsigned int changes = system.state_changes();
+        if (merit_trial == 0 && step == 1.
+            && parameters.full_step_state_changes > 0 && changes >= 1
+            && changes <= parameters.full_step_state_changes)
+          break;
         ++merit_trial;
         step *= 0.5;
       }

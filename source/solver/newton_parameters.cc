@@ -47,6 +47,16 @@ namespace deepdraw
                         "Halvings of a Newton step allowed when it does not "
                         "reduce the out-of-balance forces (0 switches the "
                         "line search off).");
+      prm.declare_entry(
+        "Full step state changes",
+        "0",
+        Patterns::Integer(0, 1000000),
+        "A Newton step whose full length changes the contact state (open, "
+        "stick, slip) of at least one and at most this many contact pairs is "
+        "taken whole even if it does not reduce the out-of-balance forces: "
+        "the few pairs it switches are the ones the semismooth Newton is "
+        "settling, and halving the step only keeps them switching back "
+        "(doc/decisions.md D91). 0: the line search always backtracks.");
       prm.declare_entry("Stagnation iterations",
                         "8",
                         Patterns::Integer(0, 1000),
@@ -89,15 +99,16 @@ namespace deepdraw
     NewtonParameters::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Newton");
-      maximum_iterations    = prm.get_integer("Maximum iterations");
-      force_tolerance       = prm.get_double("Force tolerance");
-      correction_tolerance  = prm.get_double("Correction tolerance");
-      divergence_ratio      = prm.get_double("Divergence ratio");
-      line_search_steps     = prm.get_integer("Line search steps");
-      stagnation_iterations = prm.get_integer("Stagnation iterations");
-      stagnation_residual   = prm.get_double("Stagnation residual");
-      predictor             = prm.get("Predictor");
-      tool_force_tolerance  = prm.get_double("Tool force tolerance");
+      maximum_iterations      = prm.get_integer("Maximum iterations");
+      force_tolerance         = prm.get_double("Force tolerance");
+      correction_tolerance    = prm.get_double("Correction tolerance");
+      divergence_ratio        = prm.get_double("Divergence ratio");
+      line_search_steps       = prm.get_integer("Line search steps");
+      full_step_state_changes = prm.get_integer("Full step state changes");
+      stagnation_iterations   = prm.get_integer("Stagnation iterations");
+      stagnation_residual     = prm.get_double("Stagnation residual");
+      predictor               = prm.get("Predictor");
+      tool_force_tolerance    = prm.get_double("Tool force tolerance");
       prm.leave_subsection();
 
       // A tolerance of 0 can never be met (every increment would be cut back

@@ -81,6 +81,7 @@ namespace
        {"Newton/Correction tolerance", ""},
        {"Newton/Divergence ratio", ""},
        {"Newton/Line search steps", "0"},
+       {"Newton/Full step state changes", "0"},
        {"Newton/Stagnation iterations", "0"},
        {"Newton/Stagnation residual", "0"},
        {"Newton/Tool force tolerance", "0"},

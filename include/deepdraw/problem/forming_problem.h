@@ -204,6 +204,8 @@ namespace deepdraw
       residual_measures() const override;
       double
       merit() const override;
+      unsigned int
+      state_changes() const override;
       double
       correction_norm(const Vector<double> &correction) const override;
       double
@@ -440,6 +442,8 @@ namespace deepdraw
       std::vector<double> residual_history;
       std::vector<double> contact_residual_history;
       unsigned int        contact_changes = 0;
+      // Of the last assembly alone (NewtonSystem::state_changes, D91).
+      unsigned int last_assembly_changes = 0;
       // Contact state changes already written to newton.csv.
       unsigned int changes_reported = 0;
       unsigned int n_plastic_points = 0;

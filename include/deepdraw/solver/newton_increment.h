@@ -77,6 +77,13 @@ namespace deepdraw
       // Merit of the last assembly for the line search (N).
       virtual double
       merit() const = 0;
+      // Contact pairs whose state (open / stick / slip) the last assembly
+      // changed; a system without such states has none (D91).
+      virtual unsigned int
+      state_changes() const
+      {
+        return 0;
+      }
       // Norm of the displacement part of a correction (mm), and that
       // norm relative to the displacement so far (at x).
       virtual double

@@ -21,6 +21,10 @@ namespace deepdraw
       double divergence_ratio = 1e4;
       // Halvings of the Newton step allowed by the line search (0: none).
       unsigned int line_search_steps = 4;
+      // A step whose full trial changes the contact state of at least one
+      // and at most this many pairs is taken whole, without backtracking
+      // (0: always backtrack; doc/decisions.md D91).
+      unsigned int full_step_state_changes = 0;
       // An increment whose relative residual is still above
       // stagnation_residual after stagnation_iterations iterations is cut
       // back at once (0: never).
