@@ -91,6 +91,7 @@ namespace
        {"Adaptivity/Maximum level", "0"},
        {"Adaptivity/Maximum number of cells", ""},
        {"Adaptivity/Jump threshold", "0"},
+       {"Adaptivity/Curvature threshold", ""},
        {"Output/Thickness profile travels", "0"},
        {"Contact/Friction coefficient", "0"},
        {"Contact/Augmentation parameter", "0"},
