@@ -100,6 +100,23 @@ namespace deepdraw
                         "where the sheet bends) or into 4 in the plane of "
                         "the sheet (in_plane: smaller elements along the "
                         "tool radii, same layers).");
+      prm.declare_entry("Vertex placement",
+                        "linear",
+                        Patterns::Selection("linear|smooth"),
+                        "Where the vertices added by a refinement go: "
+                        "'linear' at the Q1 interpolation of the coarse "
+                        "vertices (on the chord of a bent edge), 'smooth' on "
+                        "the cubic through the old vertices along each mesh "
+                        "line (doc/theory.md §8, D87). Hanging vertices "
+                        "stay at the Q1 position.");
+      prm.declare_entry("History transfer",
+                        "nearest",
+                        Patterns::Selection("nearest|interpolated"),
+                        "How the Gauss points of a refined cell get their "
+                        "history: 'nearest' the state of the parent's "
+                        "nearest Gauss point (D57), 'interpolated' the "
+                        "trilinear interpolation of the parent's 8 points, "
+                        "returned to the yield surface (D88).");
       prm.leave_subsection();
     }
 
@@ -117,6 +134,8 @@ namespace deepdraw
       region_min     = parse_point(prm.get("Region minimum"), "Region minimum");
       region_max     = parse_point(prm.get("Region maximum"), "Region maximum");
       refinement     = prm.get("Refinement");
+      vertex_placement = prm.get("Vertex placement");
+      history_transfer = prm.get("History transfer");
       prm.leave_subsection();
     }
 

@@ -103,7 +103,16 @@ namespace deepdraw
                                             state.previous_converged_solution);
         old_area         = nodal_surface_area(triangulation);
       }
-      refine_and_transfer(triangulation, dof_handler, state);
+      TransferOptions options;
+      options.vertex_placement
+        = adaptivity_parameters.vertex_placement == "smooth"
+            ? VertexPlacement::smooth
+            : VertexPlacement::linear;
+      options.history = adaptivity_parameters.history_transfer == "interpolated"
+                          ? HistoryTransfer::interpolated
+                          : HistoryTransfer::nearest;
+      options.material = material.get();
+      refine_and_transfer(triangulation, dof_handler, state, options);
       const std::vector<fe::VertexParents> parents
         = fe::vertex_parents(triangulation, n_old_vertices);
       add_blank_parents(parents, n_old_vertices);
