@@ -101,14 +101,15 @@ namespace deepdraw
                         "the sheet (in_plane: smaller elements along the "
                         "tool radii, same layers).");
       prm.declare_entry("Vertex placement",
-                        "linear",
+                        "smooth",
                         Patterns::Selection("linear|smooth"),
                         "Where the vertices added by a refinement go: "
                         "'linear' at the Q1 interpolation of the coarse "
                         "vertices (on the chord of a bent edge), 'smooth' on "
                         "the cubic through the old vertices along each mesh "
-                        "line (doc/theory.md §8, D87). Hanging vertices "
-                        "stay at the Q1 position.");
+                        "line (doc/theory.md §8, D87; on the square cup "
+                        "it removes the too-high thinning of D86). Hanging "
+                        "vertices stay at the Q1 position.");
       prm.declare_entry("History transfer",
                         "nearest",
                         Patterns::Selection("nearest|interpolated"),

@@ -233,7 +233,12 @@ namespace deepdraw
       IncrementOutcome outcome = assemble_at(newton_unknowns, false);
       if (outcome == IncrementOutcome::converged)
       {
-        solver::NewtonIncrement newton(newton_parameters);
+        // No stagnation cut (D89): it saves the time of an increment that
+        // a cut-back would redo smaller, but a re-equilibration has no
+        // smaller step; it may use all of Maximum iterations.
+        solver::NewtonParameters settings = newton_parameters;
+        settings.stagnation_iterations    = 0;
+        solver::NewtonIncrement newton(settings);
         outcome          = newton.run(*this, newton_unknowns, true, iterations);
         residual_history = newton.force_residuals();
         contact_residual_history = newton.contact_residuals();

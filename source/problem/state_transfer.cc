@@ -81,12 +81,16 @@ namespace deepdraw
       // are straight.
       const bool smooth = options.vertex_placement == VertexPlacement::smooth;
       const unsigned int n_old_vertices = triangulation.n_vertices();
-      std::vector<std::vector<unsigned int>> line_neighbours;
+      std::vector<std::vector<unsigned int>> lines;
       std::vector<Point<3>>                  reference;
+      std::vector<fe::VertexParents>         freed_parents;
+      std::vector<bool>                      hung;
       if (smooth)
       {
-        line_neighbours = active_line_neighbours(triangulation);
-        reference       = triangulation.get_vertices();
+        lines         = line_neighbours(triangulation);
+        freed_parents = hanging_edge_parents(triangulation);
+        hung          = hanging_vertices(triangulation);
+        reference     = triangulation.get_vertices();
         for (const auto &cell : dof_handler.active_cell_iterators())
           for (const unsigned int v : cell->vertex_indices())
             for (unsigned int c = 0; c < 3; ++c)
@@ -114,28 +118,42 @@ namespace deepdraw
       state.previous_converged_solution = fields[2];
 
       std::vector<Point<3>> q1_vertices;
+      std::vector<bool>     moved;
       if (smooth)
       {
-        q1_vertices = triangulation.get_vertices();
-        // New vertices onto the smooth curves through the old ones; the
-        // total displacement moves with them (D87). Hanging vertices stay
-        // on their coarse edge or face.
+        // New vertices, and old ones that hung on a coarse edge and do not
+        // any more, onto the smooth curves through the old ones; the total
+        // displacement moves with them (D87). Hanging vertices stay on
+        // their coarse edge or face.
+        q1_vertices                     = triangulation.get_vertices();
+        const std::vector<bool> hanging = hanging_vertices(triangulation);
+        std::vector<fe::VertexParents> parents
+          = fe::vertex_parents(triangulation, n_old_vertices);
+        moved.assign(triangulation.n_vertices(), false);
+        std::vector<bool> hung_all = hung;
+        hung_all.resize(triangulation.n_vertices(), false);
+        for (unsigned int v = 0; v < triangulation.n_vertices(); ++v)
+          if (!hanging[v])
+          {
+            if (v < n_old_vertices && freed_parents[v].size() == 2)
+              parents[v] = freed_parents[v];
+            moved[v] = parents[v].size() >= 2;
+          }
         const std::vector<Point<3>> positions
-          = smooth_vertex_positions(triangulation.get_vertices(),
+          = smooth_vertex_positions(q1_vertices,
                                     reference,
-                                    line_neighbours,
-                                    fe::vertex_parents(triangulation,
-                                                       n_old_vertices),
-                                    hanging_vertices(triangulation),
-                                    n_old_vertices);
-        std::vector<bool> moved(triangulation.n_vertices(), false);
+                                    lines,
+                                    parents,
+                                    moved,
+                                    hung_all);
+        std::vector<bool> done(triangulation.n_vertices(), false);
         for (const auto &cell : dof_handler.active_cell_iterators())
           for (const unsigned int v : cell->vertex_indices())
           {
             const unsigned int index = cell->vertex_index(v);
-            if (index < n_old_vertices || moved[index])
+            if (!moved[index] || done[index])
               continue;
-            moved[index]              = true;
+            done[index]               = true;
             const Tensor<1, 3> offset = positions[index] - cell->vertex(v);
             for (unsigned int c = 0; c < 3; ++c)
               state.total_displacement[cell->vertex_dof_index(v, c)]
@@ -186,24 +204,32 @@ namespace deepdraw
                                       *options.material)
                 : parent_points[nearest_point(quadrature, xi)];
         }
-        // The child's points turn with its cell from the Q1 to the smooth
-        // placement (D87): the stress stays the same in the material frame.
-        if (smooth)
+      }
+      // The points of every cell with a moved vertex turn with it from the
+      // Q1 to the smooth placement (D87): the stress stays the same in the
+      // material frame. (Cells whose vertices did not move keep their axes
+      // bit for bit.)
+      if (smooth)
+        for (const auto &cell : triangulation.active_cell_iterators())
         {
           std::array<Point<3>, 8> q1_corners, corners;
+          bool                    any_moved = false;
           for (const unsigned int v : cell->vertex_indices())
           {
             q1_corners[v] = q1_vertices[cell->vertex_index(v)];
             corners[v]    = cell->vertex(v);
+            any_moved     = any_moved || corners[v] != q1_corners[v];
           }
+          if (!any_moved)
+            continue;
           for (unsigned int q = 0; q < n_points; ++q)
           {
-            auto &axes = history[new_cell * n_points + q].material_axes;
+            auto &axes
+              = history[cell->active_cell_index() * n_points + q].material_axes;
             axes = placement_rotation(q1_corners, corners, quadrature.point(q))
                    * axes;
           }
         }
-      }
       state.history             = std::move(history);
       state.enhanced_parameters = std::move(enhanced);
       state.vertices            = triangulation.get_vertices();

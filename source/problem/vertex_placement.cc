@@ -17,29 +17,35 @@ namespace deepdraw
       // |c - a| is 1/2 to 2 times |b - a| (a line of the same level).
       constexpr double continuation_cosine = -0.9;
 
-      // The old vertex beyond a on the line b -> a, or -1.
+      // The old vertex beyond a on the line b -> a, or -1: among the lines
+      // at a, the one closest in length to (b, a) (a line of the same
+      // level where there is one), skipping vertices that hang (they sit on
+      // a chord, not on the surface).
       int
       continuation(const unsigned int                            a,
                    const unsigned int                            b,
                    const std::vector<Point<3>>                  &reference,
-                   const std::vector<std::vector<unsigned int>> &neighbours)
+                   const std::vector<std::vector<unsigned int>> &neighbours,
+                   const std::vector<bool>                      &excluded)
       {
         const Tensor<1, 3> edge        = reference[b] - reference[a];
         const double       length      = edge.norm();
         int                best        = -1;
-        double             best_cosine = continuation_cosine;
+        double             best_misfit = 0.;
         for (const unsigned int c : neighbours[a])
         {
-          if (c == b)
+          if (c == b || excluded[c])
             continue;
           const Tensor<1, 3> beyond = reference[c] - reference[a];
           const double       ratio  = beyond.norm() / length;
           if (ratio < 0.5 || ratio > 2.)
             continue;
           const double cosine = beyond * edge / (beyond.norm() * length);
-          if (cosine < best_cosine)
+          const double misfit = std::abs(std::log(ratio));
+          if (cosine < continuation_cosine
+              && (best < 0 || misfit < best_misfit))
           {
-            best_cosine = cosine;
+            best_misfit = misfit;
             best        = int(c);
           }
         }
@@ -73,10 +79,11 @@ namespace deepdraw
                       const unsigned int                            b,
                       const std::vector<Point<3>>                  &current,
                       const std::vector<Point<3>>                  &reference,
-                      const std::vector<std::vector<unsigned int>> &neighbours)
+                      const std::vector<std::vector<unsigned int>> &neighbours,
+                      const std::vector<bool>                      &excluded)
       {
-        const int before = continuation(a, b, reference, neighbours);
-        const int after  = continuation(b, a, reference, neighbours);
+        const int before = continuation(a, b, reference, neighbours, excluded);
+        const int after  = continuation(b, a, reference, neighbours, excluded);
         if (before < 0 && after < 0)
           return Tensor<1, 3>();
         const double          length = reference[a].distance(reference[b]);
@@ -92,27 +99,30 @@ namespace deepdraw
           t.push_back(length + reference[b].distance(reference[after]));
           x.push_back(current[after]);
         }
-        return lagrange(t, x, 0.5 * length) - 0.5 * (current[a] + current[b]);
+        Tensor<1, 3> correction
+          = lagrange(t, x, 0.5 * length) - 0.5 * (current[a] + current[b]);
+        // A straight line gives a correction of round-off size; dropping
+        // it keeps deal.II's midpoint bit for bit on flat or affinely
+        // deformed meshes (the sagitta of 1e-10 L is that of a radius of
+        // 1e9 L).
+        if (correction.norm() <= 1e-10 * length)
+          correction = 0;
+        return correction;
       }
     } // namespace
 
 
     std::vector<std::vector<unsigned int>>
-    active_line_neighbours(const Triangulation<3> &mesh)
+    line_neighbours(const Triangulation<3> &mesh)
     {
       std::vector<std::set<unsigned int>> sets(mesh.n_vertices());
-      for (const auto &cell : mesh.active_cell_iterators())
+      for (const auto &cell : mesh.cell_iterators())
         for (const unsigned int l : cell->line_indices())
         {
           const auto line = cell->line(l);
-          if (line->has_children())
-            continue;
           sets[line->vertex_index(0)].insert(line->vertex_index(1));
           sets[line->vertex_index(1)].insert(line->vertex_index(0));
         }
-      // A line of a coarse cell that was refined by a neighbour has
-      // children; its halves are lines of the finer active cells, so every
-      // active edge is reached through some active cell.
       std::vector<std::vector<unsigned int>> neighbours(mesh.n_vertices());
       for (unsigned int v = 0; v < sets.size(); ++v)
         neighbours[v].assign(sets[v].begin(), sets[v].end());
@@ -167,19 +177,35 @@ namespace deepdraw
     }
 
 
+    std::vector<fe::VertexParents>
+    hanging_edge_parents(const Triangulation<3> &mesh)
+    {
+      std::vector<fe::VertexParents> parents(mesh.n_vertices());
+      for (const auto &cell : mesh.active_cell_iterators())
+        for (const unsigned int l : cell->line_indices())
+        {
+          const auto line = cell->line(l);
+          if (line->has_children())
+            parents[line->child(0)->vertex_index(1)]
+              = {{line->vertex_index(0), 0.5}, {line->vertex_index(1), 0.5}};
+        }
+      return parents;
+    }
+
+
     std::vector<Point<3>>
     smooth_vertex_positions(
       const std::vector<Point<3>>                  &current,
       const std::vector<Point<3>>                  &reference,
       const std::vector<std::vector<unsigned int>> &neighbours,
       const std::vector<fe::VertexParents>         &parents,
-      const std::vector<bool>                      &fixed,
-      const unsigned int                            n_old_vertices)
+      const std::vector<bool>                      &place,
+      const std::vector<bool>                      &excluded)
     {
       std::vector<Point<3>> positions = current;
-      for (unsigned int v = n_old_vertices; v < current.size(); ++v)
+      for (unsigned int v = 0; v < current.size(); ++v)
       {
-        if (fixed[v] || parents[v].size() < 2)
+        if (!place[v] || parents[v].size() < 2)
           continue;
         // Q1 position, plus the correction of every edge among the parents
         // (an edge midpoint: 1 edge; a face centre: 2 per direction, each
@@ -197,7 +223,12 @@ namespace deepdraw
                                       neighbours[a].end(),
                                       b))
               x += weight
-                   * edge_correction(a, b, current, reference, neighbours);
+                   * edge_correction(a,
+                                     b,
+                                     current,
+                                     reference,
+                                     neighbours,
+                                     excluded);
         // A coordinate all parents share exactly (a symmetry plane, D87)
         // stays exact.
         for (unsigned int d = 0; d < 3; ++d)

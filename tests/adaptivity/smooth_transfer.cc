@@ -11,7 +11,9 @@
 //   its total displacement follows it (x = X + u); the coordinate y = 0 of
 //   the vertices on the symmetry plane stays exactly 0; the rotation of a
 //   child from its Q1 to its smooth corners is that of the shear the move
-//   makes, and a rigid motion's rotation exactly;
+//   makes, and a rigid motion's rotation exactly; on a locally refined
+//   bent block the hanging vertices stay on the chord and go onto the
+//   cylinder when a later refinement frees them;
 // - the interpolated history on a 2 x 1 x 1 block: constant stress, back
 //   stress and axes exact to round-off, a linear epbar exact (the
 //   trilinear interpolation of a linear field), axes that vary linearly
@@ -56,16 +58,16 @@ namespace
     problem::SimulationState state;
   };
 
-  // The blank 6 x 2 x 1 cells, bent: vertices at x, total displacement
+  // The blank 6 x rows x 1 cells, bent: vertices at x, total displacement
   // x - X. Returns the blank's vertices.
   std::vector<Point<3>>
-  set_up_bent(Block &block)
+  set_up_bent(Block &block, const unsigned int rows = 2)
   {
     GridGenerator::subdivided_hyper_rectangle(block.triangulation,
-                                              {6, 2, 1},
+                                              {6, rows, 1},
                                               Point<3>(0., 0., 0.),
                                               Point<3>(6 * L,
-                                                       2 * L,
+                                                       rows * L,
                                                        thickness));
     const std::vector<Point<3>> blank = block.triangulation.get_vertices();
     for (const auto &cell : block.triangulation.active_cell_iterators())
@@ -142,6 +144,68 @@ namespace
           errors.symmetry_exact = false;
       }
     return errors;
+  }
+
+  // Largest distance of the vertices with s inside the block (not on its
+  // first and last cell) and y = `row_y` from the exact image of their
+  // initial position, x - u (on the flat refined grid).
+  double
+  row_error(const Block &block, const double row_y)
+  {
+    double error = 0.;
+    for (const auto &cell : block.dof_handler.active_cell_iterators())
+      for (const unsigned int v : cell->vertex_indices())
+      {
+        Point<3> X;
+        for (unsigned int c = 0; c < 3; ++c)
+          X[c] = cell->vertex(v)[c]
+                 - block.state.total_displacement[cell->vertex_dof_index(v, c)];
+        if (std::abs(X[1] - row_y) < 1e-9 && X[0] > L + 1e-9
+            && X[0] < 5 * L - 1e-9)
+          error = std::max(error, cell->vertex(v).distance(bent(X)));
+      }
+    return error;
+  }
+
+  // Local refinement on a bent 6 x 3 x 1 block: the middle row first (its
+  // vertices on y = L and 2 L in the middle of the coarse neighbours' bent
+  // edges hang and stay on the chord, D82), then the two other rows, which
+  // frees them: they go onto the cylinder like new vertices.
+  void
+  check_freed_hanging_vertices()
+  {
+    Block block;
+    set_up_bent(block, 3);
+    problem::TransferOptions options;
+    options.vertex_placement = problem::VertexPlacement::smooth;
+    for (const auto &cell : block.triangulation.active_cell_iterators())
+      if (cell->center()[1] > L && cell->center()[1] < 2 * L)
+        cell->set_refine_flag(RefinementCase<3>::cut_xy);
+    problem::refine_and_transfer(block.triangulation,
+                                 block.dof_handler,
+                                 block.state,
+                                 options);
+    const double sagitta = (R + thickness) * (1. - std::cos(L / (2. * R)));
+    deepdraw_test::check_close("hanging vertices stay on the chord (mm)",
+                               row_error(block, L),
+                               sagitta,
+                               1e-12);
+    deepdraw_test::check_true("the middle row's new vertices on the cylinder",
+                              row_error(block, 1.5 * L)
+                                <= 9. / 16. / 24. * std::pow(L, 4)
+                                     * (R + thickness) / std::pow(R, 4));
+    for (const auto &cell : block.triangulation.active_cell_iterators())
+      if (cell->level() == 0)
+        cell->set_refine_flag(RefinementCase<3>::cut_xy);
+    problem::refine_and_transfer(block.triangulation,
+                                 block.dof_handler,
+                                 block.state,
+                                 options);
+    deepdraw_test::check_true("freed hanging vertices on the cylinder ("
+                                + std::to_string(row_error(block, L)) + " mm)",
+                              row_error(block, L)
+                                <= 9. / 16. / 24. * std::pow(L, 4)
+                                     * (R + thickness) / std::pow(R, 4));
   }
 
   // Rotation by `angle` about (1, 1, 1)/sqrt 3 (Rodrigues).
@@ -354,6 +418,7 @@ main(int argc, char *argv[])
   deepdraw_test::check_true("smooth placement: y = 0 kept exactly",
                             smooth.symmetry_exact);
   check_placement_rotation();
+  check_freed_hanging_vertices();
 
   const material::HillPlasticity material{material::MaterialParameters()};
   check_history(material);

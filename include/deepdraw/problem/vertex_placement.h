@@ -27,11 +27,11 @@ namespace deepdraw
   {
     using namespace dealii;
 
-    // Per vertex, the other ends of the lines without children (the edges
-    // of the active mesh, hanging ones included) that meet at it: the mesh
-    // lines of the mesh before a refinement.
+    // Per vertex, the other ends of the lines that meet at it, on every
+    // level (a refined line included): the mesh lines of the mesh before
+    // a refinement.
     std::vector<std::vector<unsigned int>>
-    active_line_neighbours(const Triangulation<3> &mesh);
+    line_neighbours(const Triangulation<3> &mesh);
 
     // Vertices that lie inside an edge or face of an active cell (hanging
     // vertices: their position is the Q1 interpolation of the coarse
@@ -39,17 +39,24 @@ namespace deepdraw
     std::vector<bool>
     hanging_vertices(const Triangulation<3> &mesh);
 
-    // Positions of all vertices of a refined mesh with the new ones
-    // (index >= n_old_vertices) placed on the smooth curves through the
-    // old ones (D87). current: the refined mesh's vertices (new ones at
-    // the Q1 positions); reference: the old vertices' positions in a
-    // configuration in which the mesh lines are straight or nearly so (the
-    // blank's), which gives the parameter along each line and selects the
-    // continuation of a line at a vertex (the neighbour most nearly
-    // opposite, within 25 degrees, spaced at 1/2..2 times the edge);
-    // neighbours: active_line_neighbours of the mesh before refinement;
-    // parents: fe::vertex_parents of the refined mesh; fixed: vertices that
-    // keep their position (hanging ones). A coordinate that all parents
+    // Per vertex, the ends of the refined line of an active cell whose
+    // midpoint it is (weights 1/2), else empty: the parents of the hanging
+    // edge midpoints, which a later refinement of the coarse cell frees.
+    std::vector<fe::VertexParents>
+    hanging_edge_parents(const Triangulation<3> &mesh);
+
+    // Positions of all vertices of a refined mesh with those flagged in
+    // `place` put on the smooth curves through their parents (D87): the new
+    // vertices that do not hang, and old vertices that hung on a coarse
+    // edge and no longer do (their parents: the edge's ends). current: the
+    // refined mesh's vertices (new ones at the Q1 positions); reference:
+    // the old vertices' positions in a configuration in which the mesh
+    // lines are straight or nearly so (the blank's), which gives the
+    // parameter along each line and selects the continuation of a line at
+    // a vertex (the neighbour most nearly opposite, within 25 degrees,
+    // spaced at 1/2..2 times the edge); neighbours: active_line_neighbours
+    // of the mesh before refinement; parents: old vertices with weights
+    // (fe::vertex_parents for the new ones). A coordinate that all parents
     // share bit for bit (a symmetry plane) is kept exactly.
     std::vector<Point<3>>
     smooth_vertex_positions(
@@ -57,8 +64,8 @@ namespace deepdraw
       const std::vector<Point<3>>                  &reference,
       const std::vector<std::vector<unsigned int>> &neighbours,
       const std::vector<fe::VertexParents>         &parents,
-      const std::vector<bool>                      &fixed,
-      unsigned int                                  n_old_vertices);
+      const std::vector<bool>                      &place,
+      const std::vector<bool>                      &excluded);
 
     // The rotation of a cell at xi (its unit cell) from the corners `from`
     // to the corners `to` (deal.II's vertex order): the orthogonal factor of
