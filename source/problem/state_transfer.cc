@@ -124,9 +124,26 @@ namespace deepdraw
         // New vertices, and old ones that hung on a coarse edge and do not
         // any more, onto the smooth curves through the old ones; the total
         // displacement moves with them (D87). Hanging vertices stay on
-        // their coarse edge or face.
-        q1_vertices                     = triangulation.get_vertices();
-        const std::vector<bool> hanging = hanging_vertices(triangulation);
+        // their coarse edge or face, and so does every vertex of a cell
+        // with a hanging vertex: moving it alone would bend or squash that
+        // cell by the sagitta (measured: a column of the square cup whose
+        // bottom layer was refined and top layer not came out 1.4 % thicker
+        // at once).
+        q1_vertices               = triangulation.get_vertices();
+        std::vector<bool> hanging = hanging_vertices(triangulation);
+        {
+          std::vector<bool> beside = hanging;
+          for (const auto &cell : triangulation.active_cell_iterators())
+          {
+            bool any = false;
+            for (const unsigned int v : cell->vertex_indices())
+              any = any || hanging[cell->vertex_index(v)];
+            if (any)
+              for (const unsigned int v : cell->vertex_indices())
+                beside[cell->vertex_index(v)] = true;
+          }
+          hanging = std::move(beside);
+        }
         std::vector<fe::VertexParents> parents
           = fe::vertex_parents(triangulation, n_old_vertices);
         moved.assign(triangulation.n_vertices(), false);

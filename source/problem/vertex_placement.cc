@@ -3,6 +3,7 @@
 #include <deal.II/base/geometry_info.h>
 #include <deepdraw/problem/history_interpolation.h>
 #include <deepdraw/problem/vertex_placement.h>
+#include <map>
 #include <set>
 
 namespace deepdraw
@@ -202,6 +203,14 @@ namespace deepdraw
       const std::vector<bool>                      &place,
       const std::vector<bool>                      &excluded)
     {
+      // The midpoint of each refined edge: a face or cell centre takes the
+      // correction of an edge only if its midpoint is placed too (not a
+      // hanging one left on the chord), so that the children stay
+      // consistent with the coarse neighbour at the edge of a refined zone.
+      std::map<std::pair<unsigned int, unsigned int>, unsigned int> midpoint;
+      for (unsigned int v = 0; v < current.size(); ++v)
+        if (parents[v].size() == 2)
+          midpoint[std::minmax(parents[v][0].first, parents[v][1].first)] = v;
       std::vector<Point<3>> positions = current;
       for (unsigned int v = 0; v < current.size(); ++v)
       {
@@ -221,7 +230,10 @@ namespace deepdraw
             if (a < b
                 && std::binary_search(neighbours[a].begin(),
                                       neighbours[a].end(),
-                                      b))
+                                      b)
+                && (parents[v].size() == 2
+                    || (midpoint.count({a, b}) > 0
+                        && place[midpoint.at({a, b})])))
               x += weight
                    * edge_correction(a,
                                      b,
