@@ -101,17 +101,17 @@ namespace deepdraw
                         "the sheet (in_plane: smaller elements along the "
                         "tool radii, same layers).");
       prm.declare_entry("Vertex placement",
-                        "linear",
+                        "smooth",
                         Patterns::Selection("linear|smooth"),
                         "Where the vertices added by a refinement go: "
                         "'linear' at the Q1 interpolation of the coarse "
                         "vertices (on the chord of a bent edge), 'smooth' on "
                         "the cubic through the old vertices along each mesh "
-                        "line (doc/theory.md §8, D87: it removes the "
-                        "too-high thinning of D86 where a whole zone is "
-                        "refined; next to hanging vertices it does not move "
-                        "them, D89). Hanging vertices stay at the Q1 "
-                        "position.");
+                        "line (doc/theory.md §8, D87); vertices of cells "
+                        "with a hanging vertex stay at the Q1 position. "
+                        "With 'smooth', in_plane refinement by the plastic "
+                        "strain jump refines whole through-thickness "
+                        "columns (D89).");
       prm.declare_entry("History transfer",
                         "nearest",
                         Patterns::Selection("nearest|interpolated"),

@@ -26,13 +26,18 @@ namespace deepdraw
         return true;
       Timer timer;
       // Region: 1 inside the box; plastic strain jump: the jump itself.
-      const bool                region = parameters.indicator == "region";
-      const std::vector<double> indicator
+      const bool          region = parameters.indicator == "region";
+      std::vector<double> indicator
         = region ? region_indicator(triangulation,
                                     initial_vertices,
                                     parameters.region_min,
                                     parameters.region_max)
                  : plastic_strain_jump(triangulation, state.history);
+      // In-plane refinement with the smooth placement refines whole
+      // columns (D89).
+      if (!region && parameters.refinement == "in_plane"
+          && parameters.vertex_placement == "smooth")
+        indicator = column_maximum(triangulation, indicator);
       if (flag_cells_for_refinement(triangulation,
                                     indicator,
                                     region ? 0.5 : parameters.jump_threshold,

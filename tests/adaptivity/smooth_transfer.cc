@@ -13,7 +13,8 @@
 //   child from its Q1 to its smooth corners is that of the shear the move
 //   makes, and a rigid motion's rotation exactly; on a locally refined
 //   bent block the hanging vertices stay on the chord and go onto the
-//   cylinder when a later refinement frees them;
+//   cylinder when a later refinement frees them; column_maximum spreads an
+//   indicator over its through-thickness column only;
 // - the interpolated history on a 2 x 1 x 1 block: constant stress, back
 //   stress and axes exact to round-off, a linear epbar exact (the
 //   trilinear interpolation of a linear field), axes that vary linearly
@@ -31,6 +32,7 @@
 #include <deepdraw/fe/selective_reduced_quadrature.h>
 #include <deepdraw/material/hill_plasticity.h>
 #include <deepdraw/problem/history_interpolation.h>
+#include <deepdraw/problem/refinement_indicator.h>
 #include <deepdraw/problem/state_transfer.h>
 #include <deepdraw/problem/vertex_placement.h>
 
@@ -211,6 +213,34 @@ namespace
                               row_error(block, L)
                                 <= 9. / 16. / 24. * std::pow(L, 4)
                                      * (R + thickness) / std::pow(R, 4));
+  }
+
+  // column_maximum (D89): on 3 x 1 x 2 cells an indicator set in one
+  // bottom cell reaches the cell above it and no other.
+  void
+  check_column_maximum()
+  {
+    Triangulation<3> mesh;
+    GridGenerator::subdivided_hyper_rectangle(mesh,
+                                              {3, 1, 2},
+                                              Point<3>(0., 0., 0.),
+                                              Point<3>(9., 3., 0.8));
+    std::vector<double> indicator(mesh.n_active_cells(), 0.);
+    unsigned int        marked = 0;
+    for (const auto &cell : mesh.active_cell_iterators())
+      if (cell->center()[0] > 3. && cell->center()[0] < 6.
+          && cell->center()[2] < 0.4)
+        marked = cell->active_cell_index();
+    indicator[marked]                = 0.5;
+    const std::vector<double> column = problem::column_maximum(mesh, indicator);
+    bool                      ok     = true;
+    for (const auto &cell : mesh.active_cell_iterators())
+    {
+      const bool in_column = cell->center()[0] > 3. && cell->center()[0] < 6.;
+      ok = ok && column[cell->active_cell_index()] == (in_column ? 0.5 : 0.);
+    }
+    deepdraw_test::check_true("column_maximum: the whole column, nothing else",
+                              ok);
   }
 
   // Rotation by `angle` about (1, 1, 1)/sqrt 3 (Rodrigues).
@@ -424,6 +454,7 @@ main(int argc, char *argv[])
                             smooth.symmetry_exact);
   check_placement_rotation();
   check_freed_hanging_vertices();
+  check_column_maximum();
 
   const material::HillPlasticity material{material::MaterialParameters()};
   check_history(material);

@@ -38,7 +38,7 @@ namespace deepdraw
       // "isotropic", "cut_z" (through the thickness) or "in_plane".
       std::string refinement = "isotropic";
       // "linear" or "smooth" (D87), "nearest" or "interpolated" (D88).
-      std::string vertex_placement = "linear";
+      std::string vertex_placement = "smooth";
       std::string history_transfer = "nearest";
 
       static void

@@ -35,8 +35,9 @@ namespace deepdraw
       interpolated
     };
 
-    // The defaults are deal.II's placement and D57's history, as in
-    // subsection Adaptivity (D89).
+    // The defaults are deal.II's placement and D57's history; adaptive runs
+    // take theirs from subsection Adaptivity (smooth placement by default,
+    // D89).
     struct TransferOptions
     {
       VertexPlacement vertex_placement = VertexPlacement::linear;
