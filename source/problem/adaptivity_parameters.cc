@@ -112,6 +112,26 @@ namespace deepdraw
                         "where the sheet bends) or into 4 in the plane of "
                         "the sheet (in_plane: smaller elements along the "
                         "tool radii, same layers).");
+      prm.declare_entry("Vertex placement",
+                        "smooth",
+                        Patterns::Selection("linear|smooth"),
+                        "Where the vertices added by a refinement go: "
+                        "'linear' at the Q1 interpolation of the coarse "
+                        "vertices (on the chord of a bent edge), 'smooth' on "
+                        "the cubic through the old vertices along each mesh "
+                        "line (doc/theory.md §8, D87); vertices of cells "
+                        "with a hanging vertex stay at the Q1 position. "
+                        "With 'smooth', in_plane refinement by the plastic "
+                        "strain jump refines whole through-thickness "
+                        "columns (D89).");
+      prm.declare_entry("History transfer",
+                        "nearest",
+                        Patterns::Selection("nearest|interpolated"),
+                        "How the Gauss points of a refined cell get their "
+                        "history: 'nearest' the state of the parent's "
+                        "nearest Gauss point (D57), 'interpolated' the "
+                        "trilinear interpolation of the parent's 8 points, "
+                        "returned to the yield surface (D88).");
       prm.leave_subsection();
     }
 
@@ -130,6 +150,8 @@ namespace deepdraw
       region_min = parse_point(prm.get("Region minimum"), "Region minimum");
       region_max = parse_point(prm.get("Region maximum"), "Region maximum");
       refinement = prm.get("Refinement");
+      vertex_placement = prm.get("Vertex placement");
+      history_transfer = prm.get("History transfer");
       prm.leave_subsection();
     }
 

@@ -49,7 +49,14 @@ namespace deepdraw
         threshold = parameters.curvature_threshold;
       }
       else
+      {
         indicator = plastic_strain_jump(triangulation, state.history);
+        // In-plane refinement with the smooth placement refines whole
+        // columns (D89); the tool-curvature indicator does so itself.
+        if (parameters.refinement == "in_plane"
+            && parameters.vertex_placement == "smooth")
+          indicator = column_maximum(triangulation, indicator);
+      }
       if (flag_cells_for_refinement(triangulation,
                                     indicator,
                                     threshold,
@@ -120,7 +127,16 @@ namespace deepdraw
                                             state.previous_converged_solution);
         old_area         = nodal_surface_area(triangulation);
       }
-      refine_and_transfer(triangulation, dof_handler, state);
+      TransferOptions options;
+      options.vertex_placement
+        = adaptivity_parameters.vertex_placement == "smooth"
+            ? VertexPlacement::smooth
+            : VertexPlacement::linear;
+      options.history = adaptivity_parameters.history_transfer == "interpolated"
+                          ? HistoryTransfer::interpolated
+                          : HistoryTransfer::nearest;
+      options.material = material.get();
+      refine_and_transfer(triangulation, dof_handler, state, options);
       const std::vector<fe::VertexParents> parents
         = fe::vertex_parents(triangulation, n_old_vertices);
       add_blank_parents(parents, n_old_vertices);
@@ -241,7 +257,12 @@ namespace deepdraw
       IncrementOutcome outcome = assemble_at(newton_unknowns, false);
       if (outcome == IncrementOutcome::converged)
       {
-        solver::NewtonIncrement newton(newton_parameters);
+        // No stagnation cut (D89): it saves the time of an increment that
+        // a cut-back would redo smaller, but a re-equilibration has no
+        // smaller step; it may use all of Maximum iterations.
+        solver::NewtonParameters settings = newton_parameters;
+        settings.stagnation_iterations    = 0;
+        solver::NewtonIncrement newton(settings);
         outcome          = newton.run(*this, newton_unknowns, true, iterations);
         residual_history = newton.force_residuals();
         contact_residual_history = newton.contact_residuals();

@@ -132,6 +132,28 @@ namespace deepdraw
     }
 
 
+    std::vector<double>
+    column_maximum(const Triangulation<3>    &mesh,
+                   const std::vector<double> &indicator)
+    {
+      std::vector<double> result = indicator;
+      for (const auto &cell : mesh.active_cell_iterators())
+      {
+        double &value = result[cell->active_cell_index()];
+        for (const unsigned int face : {4u, 5u})
+          for (auto other = cell; !other->at_boundary(face);)
+          {
+            const auto next = other->neighbor(face);
+            if (!next->is_active() || next->level() != cell->level())
+              break;
+            value = std::max(value, indicator[next->active_cell_index()]);
+            other = next;
+          }
+      }
+      return result;
+    }
+
+
     unsigned int
     flag_cells_for_refinement(Triangulation<3>           &mesh,
                               const std::vector<double>  &indicator,

@@ -41,6 +41,9 @@ namespace deepdraw
       Point<3> region_max;
       // "isotropic", "cut_z" (through the thickness) or "in_plane".
       std::string refinement = "isotropic";
+      // "linear" or "smooth" (D87), "nearest" or "interpolated" (D88).
+      std::string vertex_placement = "smooth";
+      std::string history_transfer = "nearest";
 
       static void
       declare_parameters(ParameterHandler &prm);

@@ -47,6 +47,16 @@ namespace deepdraw
                              const std::vector<unsigned int> &sheet_faces,
                              double                           distance);
 
+    // Per active cell: the largest indicator over its through-thickness
+    // column (the active neighbours of the same level across the z faces,
+    // 4 and 5, of the blank's structured cells), so that `in_plane`
+    // refinement refines whole columns, without hanging vertices in the
+    // mid layers of a band (D89; the smooth vertex placement, D87, moves
+    // no vertex of a cell with a hanging vertex).
+    std::vector<double>
+    column_maximum(const Triangulation<3>    &mesh,
+                   const std::vector<double> &indicator);
+
     // Sets the refine flag (parameters.refinement_case()) of the cells whose
     // indicator exceeds threshold and whose level is below the maximum,
     // largest indicator first, as long as the refined mesh, with the cells

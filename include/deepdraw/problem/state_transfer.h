@@ -6,6 +6,7 @@
 
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/grid/tria.h>
+#include <deepdraw/material/hill_plasticity.h>
 #include <deepdraw/problem/simulation_state.h>
 
 namespace deepdraw
@@ -13,6 +14,37 @@ namespace deepdraw
   namespace problem
   {
     using namespace dealii;
+
+    // Where the new vertices go (D87): `linear` at the Q1 interpolation of
+    // the parents (on the chord of a bent coarse edge), `smooth` on the
+    // curves through the old vertices along the mesh lines
+    // (vertex_placement.h).
+    enum class VertexPlacement
+    {
+      linear,
+      smooth
+    };
+
+    // How a child point's history is made (D57, D88): `nearest` the whole
+    // state of the parent's nearest Gauss point, `interpolated` the
+    // trilinear interpolation of the parent's 8 points, made admissible
+    // (history_interpolation.h).
+    enum class HistoryTransfer
+    {
+      nearest,
+      interpolated
+    };
+
+    // The defaults are deal.II's placement and D57's history; adaptive runs
+    // take theirs from subsection Adaptivity (smooth placement by default,
+    // D89).
+    struct TransferOptions
+    {
+      VertexPlacement vertex_placement = VertexPlacement::linear;
+      HistoryTransfer history          = HistoryTransfer::nearest;
+      // Needed by HistoryTransfer::interpolated (the yield surface).
+      const material::HillPlasticity *material = nullptr;
+    };
 
     // Refines the triangulation as its refine flags say (isotropic, or any
     // anisotropic case for the history; coarsening flags are rejected) and
@@ -23,19 +55,26 @@ namespace deepdraw
     //   contact blocks [lambda | z] are dropped, the caller appends those of
     //   the refined mesh's contact pairs;
     // - quadrature-point history: each child point takes the values of the
-    //   parent's Gauss point nearest to it in the parent's reference cell;
-    //   constant fields are exact, rotations stay orthogonal and every
-    //   point keeps a converged, admissible material state;
+    //   parent's Gauss point nearest to it in the parent's reference cell
+    //   (constant fields are exact, rotations stay orthogonal and every
+    //   point keeps a converged, admissible material state), or their
+    //   trilinear interpolation (options.history);
     // - enhanced parameters: cells that were not refined keep theirs,
     //   children start from zero (they belong to one increment);
-    // - vertices: the refined mesh's (it is in the configuration x_t).
+    // - vertices: the refined mesh's (it is in the configuration x_t), the
+    //   new non-hanging ones moved onto the smooth curves of
+    //   options.vertex_placement; the total displacement of a moved vertex
+    //   moves with it (its initial position stays the Q1 interpolation of
+    //   the blank's), the increments of the Newton solutions do not.
     // The DoFHandler is redistributed with its element. Throws
     // std::logic_error if a coarsening flag is set or the state does not
-    // belong to the mesh.
+    // belong to the mesh, std::invalid_argument if options.history needs
+    // the material and it is missing.
     void
-    refine_and_transfer(Triangulation<3> &triangulation,
-                        DoFHandler<3>    &dof_handler,
-                        SimulationState  &state);
+    refine_and_transfer(Triangulation<3>      &triangulation,
+                        DoFHandler<3>         &dof_handler,
+                        SimulationState       &state,
+                        const TransferOptions &options = TransferOptions());
   } // namespace problem
 } // namespace deepdraw
 
