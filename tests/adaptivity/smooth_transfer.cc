@@ -20,6 +20,7 @@
 //   trilinear interpolation of a linear field), axes that vary linearly
 //   in angle re-orthogonalised to 1e-12, and a stress extrapolated beyond
 //   the yield surface put back on it.
+#include "adaptivity/transfer_block.h"
 #include "test_utilities.h"
 
 #include <deal.II/base/mpi.h>
@@ -52,13 +53,7 @@ namespace
     return Point<3>(r * std::sin(angle), X[1], r * std::cos(angle) - R);
   }
 
-  struct Block
-  {
-    Triangulation<3>         triangulation;
-    FESystem<3>              fe{FE_Q<3>(1), 3};
-    DoFHandler<3>            dof_handler{triangulation};
-    problem::SimulationState state;
-  };
+  using Block = deepdraw_test::TransferBlock;
 
   // The blank 6 x rows x 1 cells, bent: vertices at x, total displacement
   // x - X. Returns the blank's vertices.

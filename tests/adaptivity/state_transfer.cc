@@ -12,6 +12,7 @@
 //   (3/(4 sqrt 3) - 1/4) h = 0.183 h along a halved direction of size h
 //   (the O(h) error of the transfer, doc/theory.md §8), enhanced
 //   parameters kept on unrefined cells and zero on children.
+#include "adaptivity/transfer_block.h"
 #include "test_utilities.h"
 
 #include <deal.II/base/mpi.h>
@@ -51,13 +52,7 @@ namespace
            + (1. - std::cos(angle)) * W * W;
   }
 
-  struct Block
-  {
-    Triangulation<3>         triangulation;
-    FESystem<3>              fe{FE_Q<3>(1), 3};
-    DoFHandler<3>            dof_handler{triangulation};
-    problem::SimulationState state;
-  };
+  using Block = deepdraw_test::TransferBlock;
 
   // Quadrature point positions in real space, by active cell.
   std::vector<Point<3>>
