@@ -71,7 +71,8 @@ namespace deepdraw
       prm.declare_entry("Indicator",
                         "plastic strain jump",
                         Patterns::Selection(
-                          "plastic strain jump|tool curvature|region"),
+                          "plastic strain jump|tool curvature|tool curvature "
+                          "or plastic strain jump|region"),
                         "Which cells are refined: 'plastic strain jump' "
                         "those whose cell-average equivalent plastic strain "
                         "differs from a face neighbour's by more than Jump "
@@ -79,7 +80,9 @@ namespace deepdraw
                         "thickness under a curved part of a tool (within one "
                         "sheet thickness of it) whose in-plane size times "
                         "the tool's curvature exceeds Curvature threshold, "
-                        "so before they bend; 'region' those whose centre in "
+                        "so before they bend; 'tool curvature or plastic "
+                        "strain jump' the cells either selects; 'region' "
+                        "those whose centre in "
                         "the initial configuration lies in the box Region "
                         "minimum..Region maximum (doc/theory.md §8.1).");
       prm.declare_entry("Jump threshold",

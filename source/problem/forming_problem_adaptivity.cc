@@ -24,43 +24,9 @@ namespace deepdraw
       if (!parameters.enabled || last_increment
           || state.increment_number % parameters.interval != 0)
         return true;
-      Timer timer;
-      // Region: 1 inside the box; plastic strain jump: the jump itself;
-      // tool curvature: h kappa (D94).
-      std::vector<double> indicator;
-      double              threshold = parameters.jump_threshold;
-      if (parameters.indicator == "region")
-      {
-        indicator = region_indicator(triangulation,
-                                     initial_vertices,
-                                     parameters.region_min,
-                                     parameters.region_max);
-        threshold = 0.5;
-      }
-      else if (parameters.indicator == "tool curvature")
-      {
-        std::vector<unsigned int> sheet_faces;
-        for (const ToolDefinition &tool : contact.tool_definitions())
-          sheet_faces.push_back(tool.sheet_face);
-        indicator = tool_curvature_indicator(triangulation,
-                                             contact.tools(),
-                                             sheet_faces,
-                                             geometry.thickness);
-        threshold = parameters.curvature_threshold;
-      }
-      else
-      {
-        indicator = plastic_strain_jump(triangulation, state.history);
-        // In-plane refinement with the smooth placement refines whole
-        // columns (D89); the tool-curvature indicator does so itself.
-        if (parameters.refinement == "in_plane"
-            && parameters.vertex_placement == "smooth")
-          indicator = column_maximum(triangulation, indicator);
-      }
-      if (flag_cells_for_refinement(triangulation,
-                                    indicator,
-                                    threshold,
-                                    parameters)
+      Timer                     timer;
+      const std::vector<double> indicator = scaled_refinement_indicator();
+      if (flag_cells_for_refinement(triangulation, indicator, 1., parameters)
           == 0)
         return true;
 
@@ -112,6 +78,65 @@ namespace deepdraw
          record.force_residual,
          record.wall_time});
       return true;
+    }
+
+
+    namespace
+    {
+      // value / threshold where value exceeds threshold, else 0: above 1
+      // exactly where the indicator selects, in the same order (a zero
+      // threshold selects every positive value, ranked as 1 + value).
+      std::vector<double>
+      scaled(const std::vector<double> &values, const double threshold)
+      {
+        std::vector<double> result(values.size(), 0.);
+        for (std::size_t k = 0; k < values.size(); ++k)
+          if (values[k] > threshold)
+            result[k] = threshold > 0. ? values[k] / threshold : 1. + values[k];
+        return result;
+      }
+    } // namespace
+
+
+    std::vector<double>
+    FormingProblem::scaled_refinement_indicator() const
+    {
+      const AdaptivityParameters &parameters = adaptivity_parameters;
+      if (parameters.indicator == "region")
+        return scaled(region_indicator(triangulation,
+                                       initial_vertices,
+                                       parameters.region_min,
+                                       parameters.region_max),
+                      0.5);
+      std::vector<double> result;
+      if (parameters.indicator != "tool curvature")
+      {
+        result = plastic_strain_jump(triangulation, state.history);
+        // In-plane refinement with the smooth placement refines whole
+        // columns (D89); the tool-curvature indicator does so itself.
+        if (parameters.refinement == "in_plane"
+            && parameters.vertex_placement == "smooth")
+          result = column_maximum(triangulation, result);
+        result = scaled(result, parameters.jump_threshold);
+      }
+      if (parameters.indicator != "plastic strain jump")
+      {
+        // h kappa of the tools (D94).
+        std::vector<unsigned int> sheet_faces;
+        for (const ToolDefinition &tool : contact.tool_definitions())
+          sheet_faces.push_back(tool.sheet_face);
+        const std::vector<double> curvature
+          = scaled(tool_curvature_indicator(triangulation,
+                                            contact.tools(),
+                                            sheet_faces,
+                                            geometry.thickness),
+                   parameters.curvature_threshold);
+        if (result.empty())
+          return curvature;
+        for (std::size_t k = 0; k < result.size(); ++k)
+          result[k] = std::max(result[k], curvature[k]);
+      }
+      return result;
     }
 
 

@@ -26,7 +26,8 @@ namespace deepdraw
       unsigned int maximum_level = 2;
       // No refinement that would make more active cells than this.
       unsigned int maximum_cells = 100000;
-      // "plastic strain jump", "tool curvature" or "region"
+      // "plastic strain jump", "tool curvature", "tool curvature or
+      // plastic strain jump" (either selects) or "region"
       // (refinement_indicator.h).
       std::string indicator = "plastic strain jump";
       // Plastic strain jump: refine a cell whose cell-average equivalent

@@ -265,6 +265,11 @@ namespace deepdraw
       // re-equilibration failed (reason says why).
       bool
       adapt_mesh(bool last_increment, std::string &reason);
+      // The indicator of Adaptivity/Indicator per active cell, scaled so
+      // that the cells to refine are those above 1 (value / threshold;
+      // the larger of the two for the combined indicator, D95).
+      std::vector<double>
+      scaled_refinement_indicator() const;
       // Refines the flagged cells and carries the state over (history,
       // displacements, contact pairs and multipliers).
       void
