@@ -102,6 +102,22 @@ namespace deepdraw
             largest = std::max(largest, std::abs(m(i, j)));
         return largest;
       }
+
+      // Inverts a (at most 3 x 3) in place; false if it is singular or
+      // ill-conditioned: deal.II's gauss_jordan only asserts in debug mode,
+      // so the product with the original is checked (A A^-1 = I to 1e-10).
+      bool
+      invert_checked(FullMatrix<double> &a)
+      {
+        const FullMatrix<double> original(a);
+        a.gauss_jordan();
+        FullMatrix<double> product(a.m(), a.m());
+        original.mmult(product, a);
+        for (unsigned int i = 0; i < a.m(); ++i)
+          product(i, i) -= 1.;
+        const double error = max_abs(product);
+        return std::isfinite(error) && error <= 1e-10;
+      }
     } // namespace
 
 
@@ -196,8 +212,7 @@ namespace deepdraw
         for (unsigned int a = 0; a < m; ++a)
           local.X(a, a) = 1.;
         local.P_l = C;
-        local.P_l.gauss_jordan();
-        return true;
+        return invert_checked(local.P_l);
       }
       // The elimination needs B C = C B (Alart–Curnier: polynomials in D).
       FullMatrix<double> BC(m, m), CB(m, m);
@@ -213,7 +228,8 @@ namespace deepdraw
       // E = r C - B (= I for the Alart–Curnier law), Eq. 4.2.
       FullMatrix<double> E(local.X);
       E.add(-1., B);
-      E.gauss_jordan();
+      if (!invert_checked(E))
+        return false;
       local.P_l = E;
       local.P_l *= r;
       local.P_u = E;
@@ -229,15 +245,10 @@ namespace deepdraw
       coupled_pairs = 0;
       for (unsigned int k = 0; k < blocks.size(); ++k)
       {
-        try
-        {
-          if (!read_blocks(matrix, k, local_blocks[k]))
-            return false;
-        }
-        catch (const std::exception &)
-        {
-          return false; // a singular E or C
-        }
+        // False for blocks without the structure of Eq. 4.1 or a singular
+        // E or C.
+        if (!read_blocks(matrix, k, local_blocks[k]))
+          return false;
         coupled_pairs += local_blocks[k].coupled;
       }
 
