@@ -130,18 +130,6 @@ namespace deepdraw
     }
 
 
-    std::vector<std::pair<types::global_dof_index, types::global_dof_index>>
-    ContactCoupling::multiplier_partners() const
-    {
-      std::vector<std::pair<types::global_dof_index, types::global_dof_index>>
-        partners;
-      for (const Pair &pair : pairs)
-        for (unsigned int c = 0; c < 3; ++c)
-          partners.emplace_back(pair.u_dofs[c], pair.first_multiplier + c);
-      return partners;
-    }
-
-
     std::vector<solver::MultiplierBlock>
     ContactCoupling::multiplier_blocks() const
     {

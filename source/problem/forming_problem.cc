@@ -240,10 +240,13 @@ namespace deepdraw
                                            blank_element_size);
       }
 
+      const std::vector<solver::MultiplierBlock> multiplier_blocks
+        = contact.multiplier_blocks();
       constrained_multipliers.clear();
-      for (const auto &[u_dof, multiplier] : contact.multiplier_partners())
-        if (owner.count(u_dof) > 0)
-          constrained_multipliers.push_back(multiplier);
+      for (const solver::MultiplierBlock &block : multiplier_blocks)
+        for (unsigned int c = 0; c < 3; ++c)
+          if (owner.count(block.displacement[c]) > 0)
+            constrained_multipliers.push_back(block.multiplier[c]);
       homogeneous_constraints.clear();
       homogeneous_constraints.reinit(complete_index_set(n_unknowns));
       for (const auto &[dof, entry] : prescribed_dofs)
@@ -273,7 +276,7 @@ namespace deepdraw
         constrained[line.index] = true;
       linear_solver->set_multiplier_blocks(sparsity_pattern,
                                            dof_handler.n_dofs(),
-                                           contact.multiplier_blocks(),
+                                           multiplier_blocks,
                                            contact.tool_position_unknowns(),
                                            constrained);
       system_rhs.reinit(n_unknowns);

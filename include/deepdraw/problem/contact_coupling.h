@@ -117,14 +117,13 @@ namespace deepdraw
       void
       add_sparsity(DynamicSparsityPattern &dsp) const;
 
-      // (displacement dof, multiplier dof) of every pair and component: a
-      // multiplier component whose displacement component is prescribed
-      // (e.g. on a symmetry plane) is redundant with the constraint, which
-      // carries that force, and is constrained to zero by the caller.
-      std::vector<std::pair<types::global_dof_index, types::global_dof_index>>
-      multiplier_partners() const;
-      // The unknowns of every pair, for the exact elimination of the
-      // multipliers (solver::MultiplierCondensation, D90).
+      // The unknowns of every pair: its node's displacement dofs and its
+      // multipliers, component by component, and its augmentation (for the
+      // exact elimination of the multipliers, solver::MultiplierCondensation,
+      // D90). A multiplier component whose displacement component is
+      // prescribed (e.g. on a symmetry plane) is redundant with the
+      // constraint, which carries that force, and is constrained to zero by
+      // the caller.
       std::vector<solver::MultiplierBlock>
       multiplier_blocks() const;
 

@@ -410,7 +410,7 @@ namespace deepdraw
         std::pair<types::global_dof_index, const PrescribedDisplacement *>>
         prescribed_dofs;
       // Contact-force components along prescribed displacement components
-      // (held at zero, see ContactCoupling::multiplier_partners).
+      // (held at zero, see ContactCoupling::multiplier_blocks).
       std::vector<types::global_dof_index> constrained_multipliers;
       // Hanging vertices of a refined mesh (closed; empty on the blank's
       // mesh), part of both constraint sets below.
