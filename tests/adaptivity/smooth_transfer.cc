@@ -70,14 +70,10 @@ namespace
     for (const auto &cell : block.triangulation.active_cell_iterators())
       for (const unsigned int v : cell->vertex_indices())
         cell->vertex(v) = bent(blank[cell->vertex_index(v)]);
-    block.dof_handler.distribute_dofs(block.fe);
-    auto &state = block.state;
-    state.total_displacement.reinit(block.dof_handler.n_dofs());
-    for (const auto &cell : block.dof_handler.active_cell_iterators())
-      for (const unsigned int v : cell->vertex_indices())
-        for (unsigned int c = 0; c < 3; ++c)
-          state.total_displacement[cell->vertex_dof_index(v, c)]
-            = cell->vertex(v)[c] - blank[cell->vertex_index(v)][c];
+    block.set_total_displacement(
+      [&](const Point<3> &x, const unsigned int vertex)
+      { return x - blank[vertex]; });
+    auto &state                       = block.state;
     state.converged_solution          = state.total_displacement;
     state.previous_converged_solution = state.total_displacement;
     state.history.assign(8 * block.triangulation.n_active_cells(),

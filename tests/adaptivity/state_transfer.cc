@@ -75,14 +75,9 @@ namespace
                                               {2, 1, 1},
                                               Point<3>(0., 0., 0.),
                                               Point<3>(6., 3., 1.));
-    block.dof_handler.distribute_dofs(block.fe);
-    auto &state = block.state;
-    state.total_displacement.reinit(block.dof_handler.n_dofs());
-    for (const auto &cell : block.dof_handler.active_cell_iterators())
-      for (const unsigned int v : cell->vertex_indices())
-        for (unsigned int c = 0; c < 3; ++c)
-          state.total_displacement[cell->vertex_dof_index(v, c)]
-            = linear_displacement(cell->vertex(v))[c];
+    block.set_total_displacement([](const Point<3> &x, unsigned int)
+                                 { return linear_displacement(x); });
+    auto &state              = block.state;
     state.converged_solution = state.total_displacement;
     // A contact block that the transfer must drop.
     state.converged_solution.grow_or_shrink(block.dof_handler.n_dofs() + 6);
