@@ -93,30 +93,81 @@ namespace deepdraw
         return sum;
       }
 
+      using Block3 = std::array<std::array<double, 3>, 3>;
+
       double
-      max_abs(const FullMatrix<double> &m)
+      max_abs(const Block3 &a, const unsigned int m)
       {
         double largest = 0.;
-        for (unsigned int i = 0; i < m.m(); ++i)
-          for (unsigned int j = 0; j < m.n(); ++j)
-            largest = std::max(largest, std::abs(m(i, j)));
+        for (unsigned int i = 0; i < m; ++i)
+          for (unsigned int j = 0; j < m; ++j)
+            largest = std::max(largest, std::abs(a[i][j]));
         return largest;
       }
 
-      // Inverts a (at most 3 x 3) in place; false if it is singular or
-      // ill-conditioned: deal.II's gauss_jordan only asserts in debug mode,
-      // so the product with the original is checked (A A^-1 = I to 1e-10).
-      bool
-      invert_checked(FullMatrix<double> &a)
+      Block3
+      product(const Block3 &a, const Block3 &b, const unsigned int m)
       {
-        const FullMatrix<double> original(a);
-        a.gauss_jordan();
-        FullMatrix<double> product(a.m(), a.m());
-        original.mmult(product, a);
-        for (unsigned int i = 0; i < a.m(); ++i)
-          product(i, i) -= 1.;
-        const double error = max_abs(product);
+        Block3 c{};
+        for (unsigned int i = 0; i < m; ++i)
+          for (unsigned int j = 0; j < m; ++j)
+            for (unsigned int k = 0; k < m; ++k)
+              c[i][j] += a[i][k] * b[k][j];
+        return c;
+      }
+
+      // Inverts the leading m x m (m <= 3) of a in place by Gauss–Jordan
+      // with partial pivoting; false if it is singular or ill-conditioned:
+      // the product with the original is checked (A A^-1 = I to 1e-10).
+      bool
+      invert_checked(Block3 &a, const unsigned int m)
+      {
+        const Block3 original = a;
+        Block3       inverse{};
+        for (unsigned int i = 0; i < m; ++i)
+          inverse[i][i] = 1.;
+        for (unsigned int c = 0; c < m; ++c)
+        {
+          unsigned int pivot = c;
+          for (unsigned int r = c + 1; r < m; ++r)
+            if (std::abs(a[r][c]) > std::abs(a[pivot][c]))
+              pivot = r;
+          if (a[pivot][c] == 0.)
+            return false;
+          std::swap(a[c], a[pivot]);
+          std::swap(inverse[c], inverse[pivot]);
+          const double scale = 1. / a[c][c];
+          for (unsigned int j = 0; j < m; ++j)
+          {
+            a[c][j] *= scale;
+            inverse[c][j] *= scale;
+          }
+          for (unsigned int r = 0; r < m; ++r)
+            if (r != c && a[r][c] != 0.)
+            {
+              const double factor = a[r][c];
+              for (unsigned int j = 0; j < m; ++j)
+              {
+                a[r][j] -= factor * a[c][j];
+                inverse[r][j] -= factor * inverse[c][j];
+              }
+            }
+        }
+        a                 = inverse;
+        Block3 check = product(original, a, m);
+        for (unsigned int i = 0; i < m; ++i)
+          check[i][i] -= 1.;
+        const double error = max_abs(check, m);
         return std::isfinite(error) && error <= 1e-10;
+      }
+
+      double
+      entry_at(const SparseMatrix<double> &matrix, const std::size_t position)
+      {
+        return position == SparsityPattern::invalid_entry
+                 ? 0.
+                 : SparseMatrix<double>::const_iterator(&matrix, position)
+                     ->value();
       }
     } // namespace
 
@@ -146,6 +197,26 @@ namespace deepdraw
       for (unsigned int k = 0; k < blocks.size(); ++k)
         blocks_of_node[blocks[k].displacement[0]].push_back(k);
       local_blocks.assign(blocks.size(), LocalBlocks());
+      positions.assign(blocks.size(), BlockPositions());
+      for (unsigned int k = 0; k < blocks.size(); ++k)
+      {
+        const MultiplierBlock &block = blocks[k];
+        for (unsigned int a = 0; a < 3; ++a)
+          for (unsigned int b = 0; b < 3; ++b)
+          {
+            positions[k].B[a][b] =
+              pattern(block.displacement[a], block.multiplier[b]);
+            positions[k].C[a][b] =
+              pattern(block.multiplier[a], block.multiplier[b]);
+          }
+        for (const auto z : tool_positions)
+        {
+          std::array<std::size_t, 3> row;
+          for (unsigned int a = 0; a < 3; ++a)
+            row[a] = pattern(z, block.multiplier[a]);
+          positions[k].tool_row.push_back(row);
+        }
+      }
 
       // Displacement rows keep their pattern (the multiplier rows of a
       // pair couple only to its node and z, which the node's rows have);
@@ -183,26 +254,23 @@ namespace deepdraw
                                         LocalBlocks                &local) const
     {
       const MultiplierBlock &block = blocks[k];
-      local.free.clear();
+      local.n_free                 = 0;
       for (unsigned int c = 0; c < 3; ++c)
         if (!is_constrained[block.multiplier[c]]
             && !is_constrained[block.displacement[c]])
-          local.free.push_back(c);
-      const unsigned int m = local.free.size();
-      FullMatrix<double> B(m, m), C(m, m);
+          local.free[local.n_free++] = c;
+      const unsigned int m = local.n_free;
+      Block3        B{}, C{};
       for (unsigned int a = 0; a < m; ++a)
         for (unsigned int b = 0; b < m; ++b)
         {
-          B(a, b) = matrix.el(block.displacement[local.free[a]],
-                              block.multiplier[local.free[b]]);
-          C(a, b) = matrix.el(block.multiplier[local.free[a]],
-                              block.multiplier[local.free[b]]);
+          B[a][b] = entry_at(matrix, positions[k].B[local.free[a]][local.free[b]]);
+          C[a][b] = entry_at(matrix, positions[k].C[local.free[a]][local.free[b]]);
         }
-      local.coupled = m > 0 && max_abs(B) > 0.;
-      local.X.reinit(m, m);
-      local.Y.reinit(m, m);
-      local.P_l.reinit(m, m);
-      local.P_u.reinit(m, m);
+      local.coupled = m > 0 && max_abs(B, m) > 0.;
+      for (LocalMatrix *block_matrix :
+           {&local.X, &local.Y, &local.P_l, &local.P_u})
+        *block_matrix = {m, {}};
       if (m == 0)
         return true;
       const double r = block.augmentation;
@@ -210,30 +278,65 @@ namespace deepdraw
       {
         // Open: the node rows hold no multiplier; C = I / r.
         for (unsigned int a = 0; a < m; ++a)
-          local.X(a, a) = 1.;
-        local.P_l = C;
-        return invert_checked(local.P_l);
+          local.X.entries[a][a] = 1.;
+        local.P_l.entries = C;
+        return invert_checked(local.P_l.entries, m);
       }
       // The elimination needs B C = C B (Alart–Curnier: polynomials in D).
-      FullMatrix<double> BC(m, m), CB(m, m);
-      B.mmult(BC, C);
-      C.mmult(CB, B);
-      BC.add(-1., CB);
-      if (max_abs(BC) > 1e-10 * max_abs(B) * std::max(max_abs(C), 1. / r))
+      Block3       commutator = product(B, C, m);
+      const Block3 CB         = product(C, B, m);
+      for (unsigned int a = 0; a < m; ++a)
+        for (unsigned int b = 0; b < m; ++b)
+          commutator[a][b] -= CB[a][b];
+      if (max_abs(commutator, m)
+          > 1e-10 * max_abs(B, m) * std::max(max_abs(C, m), 1. / r))
         return false;
-      local.X = C;
-      local.X *= r;
-      local.Y = B;
-      local.Y *= -r;
       // E = r C - B (= I for the Alart–Curnier law), Eq. 4.2.
-      FullMatrix<double> E(local.X);
-      E.add(-1., B);
-      if (!invert_checked(E))
+      Block3 E{};
+      for (unsigned int a = 0; a < m; ++a)
+        for (unsigned int b = 0; b < m; ++b)
+        {
+          local.X.entries[a][b] = r * C[a][b];
+          local.Y.entries[a][b] = -r * B[a][b];
+          E[a][b]               = r * C[a][b] - B[a][b];
+        }
+      if (!invert_checked(E, m))
         return false;
-      local.P_l = E;
-      local.P_l *= r;
-      local.P_u = E;
-      local.P_u *= -1.;
+      for (unsigned int a = 0; a < m; ++a)
+        for (unsigned int b = 0; b < m; ++b)
+        {
+          local.P_l.entries[a][b] = r * E[a][b];
+          local.P_u.entries[a][b] = -E[a][b];
+        }
+      return true;
+    }
+
+
+    bool
+    MultiplierCondensation::copy_row(const SparseMatrix<double>   &matrix,
+                                     const types::global_dof_index i)
+    {
+      // Both rows hold the diagonal first, then ascending columns, and
+      // condensed_of is monotone (displacements, then tool positions in
+      // order): the condensed row is the whole row without the multiplier
+      // columns, entry by entry.
+      auto target = condensed_matrix.begin(i);
+      for (auto entry = matrix.begin(i); entry != matrix.end(i); ++entry)
+      {
+        const auto j = condensed_of[entry->column()];
+        if (j == numbers::invalid_dof_index)
+        {
+          // A multiplier column left here would be lost.
+          if (entry->value() != 0.)
+            return false;
+          continue;
+        }
+        AssertThrow(target != condensed_matrix.end(i) && target->column() == j,
+                    ExcInternalError());
+        target->value() = entry->value();
+        ++target;
+      }
+      AssertThrow(target == condensed_matrix.end(i), ExcInternalError());
       return true;
     }
 
@@ -254,8 +357,7 @@ namespace deepdraw
 
       const types::global_dof_index n_c = condensed_pattern.n_rows();
       RowAccumulator                row(condensed_of, n_c);
-      condensed_matrix = 0.;
-      condensed_rhs    = 0.;
+      // Every row is written below: no zeroing.
       std::vector<bool> done(n_u, false);
       // Nodes with a coupled pair: the eliminating combination on its free
       // components; every other displacement row is copied.
@@ -274,16 +376,18 @@ namespace deepdraw
           if (!local.coupled)
             continue;
           const MultiplierBlock &block = blocks[k];
-          for (unsigned int a = 0; a < local.free.size(); ++a)
+          for (unsigned int a = 0; a < local.n_free; ++a)
           {
             double b = 0.;
-            for (unsigned int c = 0; c < local.free.size(); ++c)
+            for (unsigned int c = 0; c < local.n_free; ++c)
             {
-              const auto u_row = block.displacement[local.free[c]];
-              const auto l_row = block.multiplier[local.free[c]];
-              row.add(matrix, u_row, local.X(a, c));
-              row.add(matrix, l_row, local.Y(a, c));
-              b += local.X(a, c) * rhs[u_row] + local.Y(a, c) * rhs[l_row];
+              const auto   u_row = block.displacement[local.free[c]];
+              const auto   l_row = block.multiplier[local.free[c]];
+              const double x     = local.X.entries[a][c];
+              const double y     = local.Y.entries[a][c];
+              row.add(matrix, u_row, x);
+              row.add(matrix, l_row, y);
+              b += x * rhs[u_row] + y * rhs[l_row];
             }
             const auto i = block.displacement[local.free[a]];
             if (!row.store(condensed_matrix, i))
@@ -296,13 +400,7 @@ namespace deepdraw
       for (types::global_dof_index i = 0; i < n_u; ++i)
         if (!done[i])
         {
-          // A multiplier column left here would be lost.
-          for (auto entry = matrix.begin(i); entry != matrix.end(i); ++entry)
-            if (condensed_of[entry->column()] == numbers::invalid_dof_index
-                && entry->value() != 0.)
-              return false;
-          row.add(matrix, i, 1.);
-          if (!row.store(condensed_matrix, i))
+          if (!copy_row(matrix, i))
             return false;
           condensed_rhs[i] = rhs[i];
         }
@@ -317,20 +415,21 @@ namespace deepdraw
         {
           const LocalBlocks     &local = local_blocks[k];
           const MultiplierBlock &block = blocks[k];
-          for (unsigned int a = 0; a < local.free.size(); ++a)
+          for (unsigned int a = 0; a < local.n_free; ++a)
           {
-            const double g = matrix.el(z, block.multiplier[local.free[a]]);
+            const double g =
+              entry_at(matrix, positions[k].tool_row[t][local.free[a]]);
             if (g == 0.)
               continue;
-            for (unsigned int c = 0; c < local.free.size(); ++c)
+            for (unsigned int c = 0; c < local.n_free; ++c)
             {
-              const auto u_row = block.displacement[local.free[c]];
-              const auto l_row = block.multiplier[local.free[c]];
-              row.add(matrix, l_row, -g * local.P_l(a, c));
-              row.add(matrix, u_row, -g * local.P_u(a, c));
-              b -= g
-                   * (local.P_l(a, c) * rhs[l_row]
-                      + local.P_u(a, c) * rhs[u_row]);
+              const auto   u_row = block.displacement[local.free[c]];
+              const auto   l_row = block.multiplier[local.free[c]];
+              const double p_l   = local.P_l.entries[a][c];
+              const double p_u   = local.P_u.entries[a][c];
+              row.add(matrix, l_row, -g * p_l);
+              row.add(matrix, u_row, -g * p_u);
+              b -= g * (p_l * rhs[l_row] + p_u * rhs[u_row]);
             }
           }
         }
@@ -385,8 +484,8 @@ namespace deepdraw
             solution[block.multiplier[c]]
               = rhs[block.multiplier[c]]
                 / matrix.diag_element(block.multiplier[c]);
-        const unsigned int  m = local.free.size();
-        std::vector<double> s_l(m), s_u(m);
+        const unsigned int    m = local.n_free;
+        std::array<double, 3> s_l{}, s_u{};
         for (unsigned int c = 0; c < m; ++c)
         {
           const auto l_row = block.multiplier[local.free[c]];
@@ -403,7 +502,8 @@ namespace deepdraw
         {
           double value = 0.;
           for (unsigned int c = 0; c < m; ++c)
-            value += local.P_l(a, c) * s_l[c] + local.P_u(a, c) * s_u[c];
+            value += local.P_l.entries[a][c] * s_l[c]
+                     + local.P_u.entries[a][c] * s_u[c];
           solution[block.multiplier[local.free[a]]] = value;
         }
       }

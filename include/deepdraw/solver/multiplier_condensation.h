@@ -6,7 +6,6 @@
 #define deepdraw_solver_multiplier_condensation_h
 
 #include <array>
-#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
@@ -88,16 +87,36 @@ namespace deepdraw
       // dlambda, and dlambda = P_l (b_l - A_l x) + P_u (b_u - A_u x).
       // Coupled (B != 0): X = r C, Y = -r B, P_l = r E^-1, P_u = -E^-1;
       // otherwise (an open pair) the node rows are kept, P_l = C^-1, P_u = 0.
+      // At most 3 x 3, of the free components (fixed size: condense() runs
+      // per Newton iteration over every surface node, D96).
+      struct LocalMatrix
+      {
+        unsigned int                         size = 0;
+        std::array<std::array<double, 3>, 3> entries{};
+      };
       struct LocalBlocks
       {
-        std::vector<unsigned int> free;
-        FullMatrix<double>        X, Y, P_l, P_u;
-        bool                      coupled = false;
+        std::array<unsigned int, 3> free{};
+        unsigned int                n_free = 0;
+        LocalMatrix                 X, Y, P_l, P_u;
+        bool                        coupled = false;
+      };
+      // Where the entries of B and C of a block, and the coupling of the
+      // tool rows to its multipliers, are stored in the whole matrix
+      // (SparsityPattern::invalid_entry: not in the pattern, zero).
+      struct BlockPositions
+      {
+        std::array<std::array<std::size_t, 3>, 3> B, C;
+        std::vector<std::array<std::size_t, 3>>    tool_row;
       };
       bool
       read_blocks(const SparseMatrix<double> &matrix,
                   unsigned int                k,
                   LocalBlocks                &local) const;
+      // Row i (no coupled pair) copied in step, the multiplier columns
+      // checked to be zero; false if one is not.
+      bool
+      copy_row(const SparseMatrix<double> &matrix, types::global_dof_index i);
 
       types::global_dof_index              n_u = 0;
       std::vector<MultiplierBlock>         blocks;
@@ -109,6 +128,7 @@ namespace deepdraw
       // Condensed index of every unknown (invalid for multipliers).
       std::vector<types::global_dof_index> condensed_of;
       std::vector<LocalBlocks>             local_blocks;
+      std::vector<BlockPositions>          positions;
       SparsityPattern                      condensed_pattern;
       SparseMatrix<double>                 condensed_matrix;
       Vector<double>                       condensed_rhs;
