@@ -1,5 +1,6 @@
-// Direct solution of the (unsymmetric) Newton system: UMFPACK through
-// deal.II, or MUMPS / KLU through Trilinos Amesos (doc/theory.md §5, D27-D35).
+// Direct solution of the (unsymmetric) Newton system: MUMPS or UMFPACK
+// called directly with their analyses kept, or KLU through Trilinos Amesos
+// (doc/theory.md §5, D27-D35, D96).
 #ifndef deepdraw_solver_linear_solver_h
 #define deepdraw_solver_linear_solver_h
 
@@ -18,7 +19,7 @@ namespace deepdraw
 
     struct LinearSolverParameters
     {
-      std::string type = "UMFPACK";
+      std::string type = "MUMPS";
       // Unknowns with a diagonal row and column (open contact pairs,
       // constrained dofs) may be left out of the factorisation (D60); off
       // by default, it was slower (D64).

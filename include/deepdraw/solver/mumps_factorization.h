@@ -1,0 +1,75 @@
+// MUMPS (multifrontal LU, doc/theory.md §5.1, D96) called directly: the
+// analysis (ordering and symbolic factorisation) is kept while the sparsity
+// pattern stays the same and only the numeric factorisation is redone when
+// the values change. Through Amesos every factorisation analysed afresh,
+// which made MUMPS slower than UMFPACK (D64).
+#ifndef deepdraw_solver_mumps_factorization_h
+#define deepdraw_solver_mumps_factorization_h
+
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+#include <dmumps_c.h>
+#include <vector>
+
+namespace deepdraw
+{
+  namespace solver
+  {
+    using namespace dealii;
+
+    class MumpsFactorization
+    {
+    public:
+      // Needs MPI to be initialised (deepdraw's main does): MUMPS runs on
+      // MPI_COMM_SELF.
+      MumpsFactorization();
+      ~MumpsFactorization();
+      MumpsFactorization(const MumpsFactorization &) = delete;
+      MumpsFactorization &
+      operator=(const MumpsFactorization &)
+        = delete;
+
+      // LU factorisation of matrix, with the analysis of the last call if
+      // the pattern is the same. Throws std::runtime_error (with MUMPS'
+      // INFOG(1), INFOG(2)) if the matrix is singular.
+      void
+      factorize(const SparseMatrix<double> &matrix);
+      // Solves with the last factorisation for the columns of `rhs` (one
+      // pass through the factors for all of them).
+      void
+      solve(std::vector<Vector<double>> &rhs_and_solutions);
+      void
+      solve(const Vector<double> &rhs, Vector<double> &solution);
+      // The next factorize() analyses the pattern anew.
+      void
+      forget_analysis();
+      unsigned int
+      n_symbolic_analyses() const;
+      // Floating-point operations of the last numeric factorisation
+      // (RINFOG(3)) and the entries of its factors (INFOG(29)).
+      double
+      factorization_flops() const;
+      double
+      factor_entries() const;
+
+    private:
+      bool
+      has_pattern(const SparsityPattern &pattern) const;
+      void
+      set_up_pattern(const SparsityPattern &pattern);
+      // Runs MUMPS with `job`; on a workspace shortage (INFOG(1) = -8, -9)
+      // it doubles ICNTL(14) and repeats, up to three times.
+      void
+      run(int job);
+
+      DMUMPS_STRUC_C   data;
+      bool             analysed          = false;
+      unsigned int     symbolic_analyses = 0;
+      std::vector<int> row_index, column_index; // 1-based, as MUMPS wants
+      std::vector<double> values;
+      std::vector<double> right_hand_sides;
+    };
+  } // namespace solver
+} // namespace deepdraw
+
+#endif

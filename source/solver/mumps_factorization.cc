@@ -1,0 +1,201 @@
+#include <deepdraw/solver/mumps_factorization.h>
+#include <mpi.h>
+#include <stdexcept>
+#include <string>
+
+namespace deepdraw
+{
+  namespace solver
+  {
+    namespace
+    {
+      // MUMPS' arrays are 1-based in the documentation: ICNTL(i) is
+      // icntl[i - 1].
+      constexpr int
+      index(const int fortran_index)
+      {
+        return fortran_index - 1;
+      }
+    } // namespace
+
+
+    MumpsFactorization::MumpsFactorization()
+    {
+      int initialized = 0;
+      MPI_Initialized(&initialized);
+      if (!initialized)
+        throw std::runtime_error("MUMPS needs MPI to be initialised");
+      data              = DMUMPS_STRUC_C();
+      data.comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(MPI_COMM_SELF));
+      data.par          = 1; // the host works
+      data.sym          = 0; // unsymmetric (contact rows, D90)
+      data.job          = -1;
+      dmumps_c(&data);
+      // Silent: no messages, statistics or warnings on the terminal.
+      data.icntl[index(1)] = -1;
+      data.icntl[index(2)] = -1;
+      data.icntl[index(3)] = -1;
+      data.icntl[index(4)] = 0;
+      // Working space beyond the analysis' estimate, in percent: delayed
+      // pivots of the whole (uncondensed) system's multiplier rows need
+      // more than the default 20 (D64 used 400 through Amesos).
+      data.icntl[index(14)] = 100;
+    }
+
+
+    MumpsFactorization::~MumpsFactorization()
+    {
+      data.job = -2;
+      dmumps_c(&data);
+    }
+
+
+    void
+    MumpsFactorization::run(const int job)
+    {
+      for (unsigned int attempt = 0;; ++attempt)
+      {
+        data.job = job;
+        dmumps_c(&data);
+        const int status = data.infog[index(1)];
+        if (status >= 0)
+          return;
+        if ((status == -8 || status == -9) && attempt < 3)
+        {
+          data.icntl[index(14)] *= 2;
+          continue;
+        }
+        throw std::runtime_error(
+          "MUMPS failed in job " + std::to_string(job) + " (INFOG(1) = "
+          + std::to_string(status) + ", INFOG(2) = "
+          + std::to_string(data.infog[index(2)])
+          + (status == -10 ? ": the matrix is numerically singular" : "")
+          + ")");
+      }
+    }
+
+
+    void
+    MumpsFactorization::factorize(const SparseMatrix<double> &matrix)
+    {
+      const SparsityPattern &pattern = matrix.get_sparsity_pattern();
+      if (!has_pattern(pattern))
+        set_up_pattern(pattern);
+      std::size_t k = 0;
+      for (types::global_dof_index i = 0; i < matrix.m(); ++i)
+        for (auto entry = matrix.begin(i); entry != matrix.end(i); ++entry)
+          values[k++] = entry->value();
+      data.a = values.data();
+      if (!analysed)
+      {
+        run(1);
+        analysed = true;
+        ++symbolic_analyses;
+      }
+      run(2);
+    }
+
+
+    void
+    MumpsFactorization::solve(std::vector<Vector<double>> &rhs_and_solutions)
+    {
+      const std::size_t n = row_index.empty() ? 0 : data.n;
+      right_hand_sides.resize(n * rhs_and_solutions.size());
+      for (std::size_t c = 0; c < rhs_and_solutions.size(); ++c)
+        std::copy(rhs_and_solutions[c].begin(),
+                  rhs_and_solutions[c].end(),
+                  right_hand_sides.begin() + c * n);
+      data.rhs  = right_hand_sides.data();
+      data.nrhs = rhs_and_solutions.size();
+      data.lrhs = n;
+      run(3);
+      for (std::size_t c = 0; c < rhs_and_solutions.size(); ++c)
+        std::copy(right_hand_sides.begin() + c * n,
+                  right_hand_sides.begin() + (c + 1) * n,
+                  rhs_and_solutions[c].begin());
+    }
+
+
+    void
+    MumpsFactorization::solve(const Vector<double> &rhs,
+                              Vector<double>       &solution)
+    {
+      std::vector<Vector<double>> columns(1, rhs);
+      solve(columns);
+      solution = columns[0];
+    }
+
+
+    void
+    MumpsFactorization::forget_analysis()
+    {
+      analysed = false;
+    }
+
+
+    unsigned int
+    MumpsFactorization::n_symbolic_analyses() const
+    {
+      return symbolic_analyses;
+    }
+
+
+    double
+    MumpsFactorization::factorization_flops() const
+    {
+      return data.rinfog[index(3)];
+    }
+
+
+    double
+    MumpsFactorization::factor_entries() const
+    {
+      const int entries = data.infog[index(29)];
+      // Negative: millions of entries (MUMPS' convention for large counts).
+      return entries >= 0 ? entries : -1e6 * entries;
+    }
+
+
+    // A pattern object may be rebuilt in place: compare the entries (cheap
+    // next to a factorisation).
+    bool
+    MumpsFactorization::has_pattern(const SparsityPattern &pattern) const
+    {
+      if (!analysed || pattern.n_rows() != static_cast<std::size_t>(data.n)
+          || pattern.n_nonzero_elements() != column_index.size())
+        return false;
+      std::size_t k = 0;
+      for (types::global_dof_index i = 0; i < pattern.n_rows(); ++i)
+        for (auto entry = pattern.begin(i); entry != pattern.end(i);
+             ++entry, ++k)
+          if (row_index[k] != static_cast<int>(i + 1)
+              || column_index[k] != static_cast<int>(entry->column() + 1))
+            return false;
+      return true;
+    }
+
+
+    // Coordinate format in the order of deal.II's rows (MUMPS accepts any
+    // order): the values are then copied in step.
+    void
+    MumpsFactorization::set_up_pattern(const SparsityPattern &pattern)
+    {
+      row_index.resize(pattern.n_nonzero_elements());
+      column_index.resize(pattern.n_nonzero_elements());
+      values.resize(pattern.n_nonzero_elements());
+      std::size_t k = 0;
+      for (types::global_dof_index i = 0; i < pattern.n_rows(); ++i)
+        for (auto entry = pattern.begin(i); entry != pattern.end(i);
+             ++entry, ++k)
+        {
+          row_index[k]    = i + 1;
+          column_index[k] = entry->column() + 1;
+        }
+      data.n   = pattern.n_rows();
+      data.nnz = row_index.size();
+      data.irn = row_index.data();
+      data.jcn = column_index.data();
+      analysed = false;
+    }
+  } // namespace solver
+} // namespace deepdraw

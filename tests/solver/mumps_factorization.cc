@@ -1,0 +1,217 @@
+// MumpsFactorization (D96), MUMPS called directly with its analysis kept,
+// on the shape of a contact Newton matrix: a chain of displacement-like
+// unknowns, a multiplier per node with a zero diagonal when closed (MUMPS
+// must pivot off the diagonal), and a bordered unknown. Checked against a
+// dense Gauss–Jordan inverse of the same matrix:
+// - the solution to 1e-14 (relative; achieved 2-4e-16 on this
+//   well-conditioned 61 x 61 system, 1e-14 leaves room for other pivot
+//   orders);
+// - the analysis is kept while the pattern stays (one analysis for four
+//   value sets), redone for a new pattern and after forget_analysis();
+// - two right-hand sides solved at once equal the single solves to 1e-14;
+// - a singular matrix is reported with MUMPS' status, not solved;
+// - LinearSolver with `Type = MUMPS` and the holder bordered equals the
+//   dense solution to 1e-14.
+#include "test_utilities.h"
+
+#include <cmath>
+#include <deal.II/base/mpi.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+#include <deepdraw/solver/linear_solver.h>
+#include <deepdraw/solver/mumps_factorization.h>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+using namespace dealii;
+using namespace deepdraw_test;
+
+namespace
+{
+  constexpr unsigned int n = 30;
+
+  SparsityPattern
+  make_pattern()
+  {
+    DynamicSparsityPattern dsp(2 * n + 1, 2 * n + 1);
+    for (unsigned int i = 0; i < n; ++i)
+    {
+      dsp.add(i, i);
+      dsp.add(i, n + i);
+      dsp.add(n + i, i);
+      if (i > 0)
+        dsp.add(i, i - 1);
+      if (i + 1 < n)
+        dsp.add(i, i + 1);
+      dsp.add(n + i, n + i);
+      dsp.add(n + i, 2 * n);
+      dsp.add(2 * n, n + i);
+    }
+    dsp.add(2 * n, 2 * n);
+    SparsityPattern pattern;
+    pattern.copy_from(dsp);
+    return pattern;
+  }
+
+  // Unsymmetric; a closed pair has a zero multiplier diagonal.
+  void
+  fill(SparseMatrix<double> &A, const unsigned int state)
+  {
+    A = 0.;
+    for (unsigned int i = 0; i < n; ++i)
+    {
+      const bool closed = (i + state) % 3 == 0;
+      A.set(i, i, 2. + 0.1 * i);
+      if (i > 0)
+        A.set(i, i - 1, -1.);
+      if (i + 1 < n)
+        A.set(i, i + 1, -0.9);
+      A.set(i, n + i, closed ? -1. - 0.01 * i : 0.);
+      A.set(n + i, i, closed ? 1. : 0.);
+      A.set(n + i, n + i, closed ? 0. : 0.5);
+      A.set(n + i, 2 * n, closed ? 0.5 : 0.);
+      A.set(2 * n, n + i, closed ? 1. : 0.);
+    }
+    A.set(2 * n, 2 * n, 1.);
+  }
+
+  Vector<double>
+  dense_solution(const SparseMatrix<double> &A, const Vector<double> &b)
+  {
+    FullMatrix<double> inverse(A.m(), A.n());
+    inverse.copy_from(A);
+    inverse.gauss_jordan();
+    Vector<double> x(b.size());
+    inverse.vmult(x, b);
+    return x;
+  }
+
+  double
+  relative_difference(Vector<double> x, const Vector<double> &reference)
+  {
+    x -= reference;
+    return x.l2_norm() / reference.l2_norm();
+  }
+} // namespace
+
+int
+main(int argc, char *argv[])
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const SparsityPattern            pattern = make_pattern();
+  SparseMatrix<double>             A(pattern);
+  Vector<double>                   b(2 * n + 1), c(2 * n + 1);
+  for (unsigned int i = 0; i < b.size(); ++i)
+  {
+    b[i] = 1. + std::sin(1. + i);
+    c[i] = std::cos(0.3 * i);
+  }
+
+  deepdraw::solver::MumpsFactorization mumps;
+  for (unsigned int state = 0; state < 4; ++state)
+  {
+    fill(A, state);
+    mumps.factorize(A);
+    Vector<double> x;
+    mumps.solve(b, x);
+    check_close("state " + std::to_string(state)
+                  + ": solution against the dense inverse",
+                relative_difference(x, dense_solution(A, b)),
+                0.,
+                1e-14);
+  }
+  check_close("one analysis for four value sets",
+              mumps.n_symbolic_analyses(),
+              1,
+              0);
+  check_true("flops of the factorisation reported",
+             mumps.factorization_flops() > 0.);
+
+  std::vector<Vector<double>> columns{b, c};
+  mumps.solve(columns);
+  Vector<double> x_b, x_c;
+  mumps.solve(b, x_b);
+  mumps.solve(c, x_c);
+  check_close("two right-hand sides at once: first",
+              relative_difference(columns[0], x_b),
+              0.,
+              1e-14);
+  check_close("two right-hand sides at once: second",
+              relative_difference(columns[1], x_c),
+              0.,
+              1e-14);
+
+  mumps.forget_analysis();
+  mumps.factorize(A);
+  check_close("analysed again after forget_analysis()",
+              mumps.n_symbolic_analyses(),
+              2,
+              0);
+
+  // A new pattern (the chain alone) is analysed anew.
+  DynamicSparsityPattern chain_dsp(n, n);
+  for (unsigned int i = 0; i < n; ++i)
+    for (unsigned int j = (i > 0 ? i - 1 : 0); j <= std::min(i + 1, n - 1);
+         ++j)
+      chain_dsp.add(i, j);
+  SparsityPattern chain_pattern;
+  chain_pattern.copy_from(chain_dsp);
+  SparseMatrix<double> chain(chain_pattern);
+  for (unsigned int i = 0; i < n; ++i)
+  {
+    chain.set(i, i, 2.);
+    if (i > 0)
+      chain.set(i, i - 1, -1.);
+    if (i + 1 < n)
+      chain.set(i, i + 1, -1.);
+  }
+  mumps.factorize(chain);
+  check_close("analysed again for a new pattern",
+              mumps.n_symbolic_analyses(),
+              3,
+              0);
+
+  // Singular: the last row of the chain is zero.
+  chain.set(n - 1, n - 1, 0.);
+  chain.set(n - 1, n - 2, 0.);
+  chain.set(n - 2, n - 1, 0.);
+  bool        reported = false;
+  std::string message;
+  try
+  {
+    mumps.factorize(chain);
+  }
+  catch (const std::runtime_error &error)
+  {
+    reported = true;
+    message  = error.what();
+  }
+  std::cout << "  singular matrix: " << message << std::endl;
+  check_true("a singular matrix is reported",
+             reported && message.find("INFOG(1)") != std::string::npos);
+
+  // Through LinearSolver, with the last unknown bordered (D23).
+  deepdraw::solver::LinearSolverParameters parameters;
+  parameters.type = "MUMPS";
+  deepdraw::solver::LinearSolver solver(parameters);
+  for (unsigned int state = 0; state < 3; ++state)
+  {
+    fill(A, state);
+    Vector<double> x;
+    solver.solve(A, b, x, {2 * n});
+    check_close("LinearSolver (MUMPS, bordered), state "
+                  + std::to_string(state),
+                relative_difference(x, dense_solution(A, b)),
+                0.,
+                1e-14);
+  }
+  check_close("LinearSolver keeps the analysis",
+              solver.statistics().symbolic_analyses,
+              1,
+              0);
+  return summary();
+}
