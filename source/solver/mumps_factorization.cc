@@ -79,7 +79,7 @@ namespace deepdraw
     MumpsFactorization::factorize(const SparseMatrix<double> &matrix)
     {
       const SparsityPattern &pattern = matrix.get_sparsity_pattern();
-      if (!has_pattern(pattern))
+      if (!analysed || !analysed_pattern.matches(pattern))
         set_up_pattern(pattern);
       std::size_t k = 0;
       for (types::global_dof_index i = 0; i < matrix.m(); ++i)
@@ -156,30 +156,12 @@ namespace deepdraw
     }
 
 
-    // A pattern object may be rebuilt in place: compare the entries (cheap
-    // next to a factorisation).
-    bool
-    MumpsFactorization::has_pattern(const SparsityPattern &pattern) const
-    {
-      if (!analysed || pattern.n_rows() != static_cast<std::size_t>(data.n)
-          || pattern.n_nonzero_elements() != column_index.size())
-        return false;
-      std::size_t k = 0;
-      for (types::global_dof_index i = 0; i < pattern.n_rows(); ++i)
-        for (auto entry = pattern.begin(i); entry != pattern.end(i);
-             ++entry, ++k)
-          if (row_index[k] != static_cast<int>(i + 1)
-              || column_index[k] != static_cast<int>(entry->column() + 1))
-            return false;
-      return true;
-    }
-
-
     // Coordinate format in the order of deal.II's rows (MUMPS accepts any
     // order): the values are then copied in step.
     void
     MumpsFactorization::set_up_pattern(const SparsityPattern &pattern)
     {
+      analysed_pattern.take(pattern);
       row_index.resize(pattern.n_nonzero_elements());
       column_index.resize(pattern.n_nonzero_elements());
       values.resize(pattern.n_nonzero_elements());

@@ -45,7 +45,7 @@ namespace deepdraw
     UmfpackFactorization::factorize(const SparseMatrix<double> &matrix)
     {
       const SparsityPattern &pattern = matrix.get_sparsity_pattern();
-      if (!has_pattern(pattern))
+      if (symbolic == nullptr || !analysed_pattern.matches(pattern))
       {
         clear();
         set_up_storage(pattern);
@@ -118,28 +118,10 @@ namespace deepdraw
     }
 
 
-    // A pattern object may be rebuilt in place: compare the entries (cheap
-    // next to a factorisation).
-    bool
-    UmfpackFactorization::has_pattern(const SparsityPattern &pattern) const
-    {
-      if (symbolic == nullptr || pattern.n_rows() + 1 != row_start.size()
-          || pattern.n_nonzero_elements() != column_index.size())
-        return false;
-      std::size_t k = 0;
-      for (types::global_dof_index i = 0; i < pattern.n_rows(); ++i)
-        for (auto entry = pattern.begin(i); entry != pattern.end(i);
-             ++entry, ++k)
-          if (static_cast<types::global_dof_index>(column_index[position[k]])
-              != entry->column())
-            return false;
-      return true;
-    }
-
-
     void
     UmfpackFactorization::set_up_storage(const SparsityPattern &pattern)
     {
+      analysed_pattern.take(pattern);
       const types::global_dof_index n = pattern.n_rows();
       row_start.assign(n + 1, 0);
       column_index.resize(pattern.n_nonzero_elements());

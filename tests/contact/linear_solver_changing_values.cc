@@ -7,11 +7,11 @@
 // 0.08 and the square cup stalled. Checked: ||A x - b|| / ||b|| <= 1e-9 for
 // UMFPACK, MUMPS and KLU, with and without a bordered unknown, on a
 // saddle-point matrix like the contact block (zero diagonal in stick rows).
+#include "contact_like_pattern.h"
 #include "test_utilities.h"
 
 #include <cmath>
 #include <deal.II/base/mpi.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
@@ -57,25 +57,8 @@ main(int argc, char *argv[])
   // Trilinos (MUMPS, KLU) needs MPI.
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const unsigned int               n = 40;
-  DynamicSparsityPattern           dsp(2 * n + 1, 2 * n + 1);
-  for (unsigned int i = 0; i < n; ++i)
-  {
-    for (const unsigned int j : {i, n + i})
-    {
-      dsp.add(i, j);
-      dsp.add(j, i);
-    }
-    if (i > 0)
-      dsp.add(i, i - 1);
-    if (i + 1 < n)
-      dsp.add(i, i + 1);
-    dsp.add(n + i, n + i);
-    dsp.add(n + i, 2 * n);
-    dsp.add(2 * n, n + i);
-  }
-  dsp.add(2 * n, 2 * n);
-  SparsityPattern pattern;
-  pattern.copy_from(dsp);
+  SparsityPattern                  pattern;
+  make_contact_like_pattern(n, pattern);
   SparseMatrix<double> A(pattern);
 
   Vector<double> b(2 * n + 1);

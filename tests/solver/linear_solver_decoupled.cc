@@ -12,11 +12,11 @@
 //   closes or after reset_reduction();
 // - an unknown listed as decoupled that is not (a closed pair) is kept: the
 //   solution is still exact.
+#include "contact_like_pattern.h"
 #include "test_utilities.h"
 
 #include <cmath>
 #include <deal.II/base/mpi.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
@@ -71,25 +71,8 @@ main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const unsigned int               n = 30;
-  DynamicSparsityPattern           dsp(2 * n + 1, 2 * n + 1);
-  for (unsigned int i = 0; i < n; ++i)
-  {
-    for (const unsigned int j : {i, n + i})
-    {
-      dsp.add(i, j);
-      dsp.add(j, i);
-    }
-    if (i > 0)
-      dsp.add(i, i - 1);
-    if (i + 1 < n)
-      dsp.add(i, i + 1);
-    dsp.add(n + i, n + i);
-    dsp.add(n + i, 2 * n);
-    dsp.add(2 * n, n + i);
-  }
-  dsp.add(2 * n, 2 * n);
-  SparsityPattern pattern;
-  pattern.copy_from(dsp);
+  SparsityPattern                  pattern;
+  make_contact_like_pattern(n, pattern);
   SparseMatrix<double> A(pattern);
 
   Vector<double> b(2 * n + 1);

@@ -12,6 +12,7 @@
 // - a singular matrix is reported with MUMPS' status, not solved;
 // - LinearSolver with `Type = MUMPS` and the holder bordered equals the
 //   dense solution to 1e-14.
+#include "contact_like_pattern.h"
 #include "test_utilities.h"
 
 #include <cmath>
@@ -33,29 +34,6 @@ using namespace deepdraw_test;
 namespace
 {
   constexpr unsigned int n = 30;
-
-  SparsityPattern
-  make_pattern()
-  {
-    DynamicSparsityPattern dsp(2 * n + 1, 2 * n + 1);
-    for (unsigned int i = 0; i < n; ++i)
-    {
-      dsp.add(i, i);
-      dsp.add(i, n + i);
-      dsp.add(n + i, i);
-      if (i > 0)
-        dsp.add(i, i - 1);
-      if (i + 1 < n)
-        dsp.add(i, i + 1);
-      dsp.add(n + i, n + i);
-      dsp.add(n + i, 2 * n);
-      dsp.add(2 * n, n + i);
-    }
-    dsp.add(2 * n, 2 * n);
-    SparsityPattern pattern;
-    pattern.copy_from(dsp);
-    return pattern;
-  }
 
   // Unsymmetric; a closed pair has a zero multiplier diagonal.
   void
@@ -102,7 +80,8 @@ int
 main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const SparsityPattern            pattern = make_pattern();
+  SparsityPattern                  pattern;
+  make_contact_like_pattern(n, pattern);
   SparseMatrix<double>             A(pattern);
   Vector<double>                   b(2 * n + 1), c(2 * n + 1);
   for (unsigned int i = 0; i < b.size(); ++i)

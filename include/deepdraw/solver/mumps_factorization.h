@@ -8,6 +8,7 @@
 
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
+#include <deepdraw/solver/pattern_snapshot.h>
 #include <dmumps_c.h>
 #include <vector>
 
@@ -53,8 +54,6 @@ namespace deepdraw
       factor_entries() const;
 
     private:
-      bool
-      has_pattern(const SparsityPattern &pattern) const;
       void
       set_up_pattern(const SparsityPattern &pattern);
       // Runs MUMPS with `job`; on a workspace shortage (INFOG(1) = -8, -9)
@@ -63,6 +62,7 @@ namespace deepdraw
       run(int job);
 
       DMUMPS_STRUC_C   data;
+      PatternSnapshot  analysed_pattern;
       bool             analysed          = false;
       unsigned int     symbolic_analyses = 0;
       std::vector<int> row_index, column_index; // 1-based, as MUMPS wants

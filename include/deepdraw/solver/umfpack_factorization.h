@@ -8,6 +8,7 @@
 #include <array>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
+#include <deepdraw/solver/pattern_snapshot.h>
 #include <umfpack.h>
 #include <vector>
 
@@ -43,8 +44,6 @@ namespace deepdraw
       n_symbolic_analyses() const;
 
     private:
-      bool
-      has_pattern(const SparsityPattern &pattern) const;
       void
       set_up_storage(const SparsityPattern &pattern);
       bool
@@ -59,6 +58,7 @@ namespace deepdraw
       unsigned int                              symbolic_analyses    = 0;
       std::vector<SuiteSparse_long>             row_start, column_index;
       std::vector<double>                       values;
+      PatternSnapshot                           analysed_pattern;
       // Storage position of the k-th entry of the deal.II matrix.
       std::vector<std::size_t> position;
     };
