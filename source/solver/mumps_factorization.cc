@@ -100,6 +100,11 @@ namespace deepdraw
     MumpsFactorization::solve(std::vector<Vector<double>> &rhs_and_solutions)
     {
       const std::size_t n = row_index.empty() ? 0 : data.n;
+      for (const Vector<double> &column : rhs_and_solutions)
+        if (!analysed || column.size() != n)
+          throw std::runtime_error(
+            "MUMPS: solve() needs a factorisation of a matrix of the "
+            "right-hand side's size");
       right_hand_sides.resize(n * rhs_and_solutions.size());
       for (std::size_t c = 0; c < rhs_and_solutions.size(); ++c)
         std::copy(rhs_and_solutions[c].begin(),
