@@ -11,7 +11,7 @@
 namespace deepdraw_test
 {
   inline void
-  make_contact_like_pattern(const unsigned int        n,
+  make_contact_like_pattern(const unsigned int       n,
                             dealii::SparsityPattern &pattern)
   {
     dealii::DynamicSparsityPattern dsp(2 * n + 1, 2 * n + 1);

@@ -78,8 +78,8 @@ namespace deepdraw
       void
       back_substitute(std::vector<Vector<double>> &columns);
 
-      std::string                           type;
-      UmfpackFactorization                  umfpack;
+      std::string          type;
+      UmfpackFactorization umfpack;
       // Made on first use: MUMPS needs MPI, which not every caller has.
       std::unique_ptr<MumpsFactorization>   mumps;
       TrilinosWrappers::SparseMatrix        trilinos_matrix;
@@ -513,10 +513,10 @@ namespace deepdraw
         // S = E - D M^-1 C, z = S^-1 (f_b - D M^-1 f), x = M^-1 f - M^-1 C z.
         if (n_b > 0)
         {
-          const std::vector<Vector<double>> inverse_columns(columns.begin() + 1,
-                                                            columns.end());
-          FullMatrix<double> schur(data.corner);
-          Vector<double>     border_rhs(n_b);
+          // M^-1 C, column by column.
+          const Vector<double> *inverse_columns = columns.data() + 1;
+          FullMatrix<double>    schur(data.corner);
+          Vector<double>        border_rhs(n_b);
           for (unsigned int k = 0; k < n_b; ++k)
             border_rhs[k] = rhs[bordered[k]] - data.border_rows[k] * y;
           for (unsigned int k = 0; k < n_b; ++k)

@@ -153,7 +153,7 @@ namespace deepdraw
               }
             }
         }
-        a                 = inverse;
+        a            = inverse;
         Block3 check = product(original, a, m);
         for (unsigned int i = 0; i < m; ++i)
           check[i][i] -= 1.;
@@ -204,10 +204,10 @@ namespace deepdraw
         for (unsigned int a = 0; a < 3; ++a)
           for (unsigned int b = 0; b < 3; ++b)
           {
-            positions[k].B[a][b] =
-              pattern(block.displacement[a], block.multiplier[b]);
-            positions[k].C[a][b] =
-              pattern(block.multiplier[a], block.multiplier[b]);
+            positions[k].B[a][b]
+              = pattern(block.displacement[a], block.multiplier[b]);
+            positions[k].C[a][b]
+              = pattern(block.multiplier[a], block.multiplier[b]);
           }
         for (const auto z : tool_positions)
         {
@@ -260,17 +260,18 @@ namespace deepdraw
             && !is_constrained[block.displacement[c]])
           local.free[local.n_free++] = c;
       const unsigned int m = local.n_free;
-      Block3        B{}, C{};
+      Block3             B{}, C{};
       for (unsigned int a = 0; a < m; ++a)
         for (unsigned int b = 0; b < m; ++b)
         {
-          B[a][b] = entry_at(matrix, positions[k].B[local.free[a]][local.free[b]]);
-          C[a][b] = entry_at(matrix, positions[k].C[local.free[a]][local.free[b]]);
+          B[a][b]
+            = entry_at(matrix, positions[k].B[local.free[a]][local.free[b]]);
+          C[a][b]
+            = entry_at(matrix, positions[k].C[local.free[a]][local.free[b]]);
         }
       local.coupled = m > 0 && max_abs(B, m) > 0.;
-      for (LocalMatrix *block_matrix :
-           {&local.X, &local.Y, &local.P_l, &local.P_u})
-        *block_matrix = {m, {}};
+      for (Block3 *block_matrix : {&local.X, &local.Y, &local.P_l, &local.P_u})
+        *block_matrix = Block3{};
       if (m == 0)
         return true;
       const double r = block.augmentation;
@@ -278,9 +279,9 @@ namespace deepdraw
       {
         // Open: the node rows hold no multiplier; C = I / r.
         for (unsigned int a = 0; a < m; ++a)
-          local.X.entries[a][a] = 1.;
-        local.P_l.entries = C;
-        return invert_checked(local.P_l.entries, m);
+          local.X[a][a] = 1.;
+        local.P_l = C;
+        return invert_checked(local.P_l, m);
       }
       // The elimination needs B C = C B (Alart–Curnier: polynomials in D).
       Block3       commutator = product(B, C, m);
@@ -296,17 +297,17 @@ namespace deepdraw
       for (unsigned int a = 0; a < m; ++a)
         for (unsigned int b = 0; b < m; ++b)
         {
-          local.X.entries[a][b] = r * C[a][b];
-          local.Y.entries[a][b] = -r * B[a][b];
-          E[a][b]               = r * C[a][b] - B[a][b];
+          local.X[a][b] = r * C[a][b];
+          local.Y[a][b] = -r * B[a][b];
+          E[a][b]       = r * C[a][b] - B[a][b];
         }
       if (!invert_checked(E, m))
         return false;
       for (unsigned int a = 0; a < m; ++a)
         for (unsigned int b = 0; b < m; ++b)
         {
-          local.P_l.entries[a][b] = r * E[a][b];
-          local.P_u.entries[a][b] = -E[a][b];
+          local.P_l[a][b] = r * E[a][b];
+          local.P_u[a][b] = -E[a][b];
         }
       return true;
     }
@@ -383,8 +384,8 @@ namespace deepdraw
             {
               const auto   u_row = block.displacement[local.free[c]];
               const auto   l_row = block.multiplier[local.free[c]];
-              const double x     = local.X.entries[a][c];
-              const double y     = local.Y.entries[a][c];
+              const double x     = local.X[a][c];
+              const double y     = local.Y[a][c];
               row.add(matrix, u_row, x);
               row.add(matrix, l_row, y);
               b += x * rhs[u_row] + y * rhs[l_row];
@@ -417,16 +418,16 @@ namespace deepdraw
           const MultiplierBlock &block = blocks[k];
           for (unsigned int a = 0; a < local.n_free; ++a)
           {
-            const double g =
-              entry_at(matrix, positions[k].tool_row[t][local.free[a]]);
+            const double g
+              = entry_at(matrix, positions[k].tool_row[t][local.free[a]]);
             if (g == 0.)
               continue;
             for (unsigned int c = 0; c < local.n_free; ++c)
             {
               const auto   u_row = block.displacement[local.free[c]];
               const auto   l_row = block.multiplier[local.free[c]];
-              const double p_l   = local.P_l.entries[a][c];
-              const double p_u   = local.P_u.entries[a][c];
+              const double p_l   = local.P_l[a][c];
+              const double p_u   = local.P_u[a][c];
               row.add(matrix, l_row, -g * p_l);
               row.add(matrix, u_row, -g * p_u);
               b -= g * (p_l * rhs[l_row] + p_u * rhs[u_row]);
@@ -502,8 +503,7 @@ namespace deepdraw
         {
           double value = 0.;
           for (unsigned int c = 0; c < m; ++c)
-            value += local.P_l.entries[a][c] * s_l[c]
-                     + local.P_u.entries[a][c] * s_u[c];
+            value += local.P_l[a][c] * s_l[c] + local.P_u[a][c] * s_u[c];
           solution[block.multiplier[local.free[a]]] = value;
         }
       }

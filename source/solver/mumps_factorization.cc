@@ -66,9 +66,9 @@ namespace deepdraw
           continue;
         }
         throw std::runtime_error(
-          "MUMPS failed in job " + std::to_string(job) + " (INFOG(1) = "
-          + std::to_string(status) + ", INFOG(2) = "
-          + std::to_string(data.infog[index(2)])
+          "MUMPS failed in job " + std::to_string(job)
+          + " (INFOG(1) = " + std::to_string(status)
+          + ", INFOG(2) = " + std::to_string(data.infog[index(2)])
           + (status == -10 ? ": the matrix is numerically singular" : "")
           + ")");
       }

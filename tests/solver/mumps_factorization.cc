@@ -82,8 +82,8 @@ main(int argc, char *argv[])
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   SparsityPattern                  pattern;
   make_contact_like_pattern(n, pattern);
-  SparseMatrix<double>             A(pattern);
-  Vector<double>                   b(2 * n + 1), c(2 * n + 1);
+  SparseMatrix<double> A(pattern);
+  Vector<double>       b(2 * n + 1), c(2 * n + 1);
   for (unsigned int i = 0; i < b.size(); ++i)
   {
     b[i] = 1. + std::sin(1. + i);
@@ -134,8 +134,7 @@ main(int argc, char *argv[])
   // A new pattern (the chain alone) is analysed anew.
   DynamicSparsityPattern chain_dsp(n, n);
   for (unsigned int i = 0; i < n; ++i)
-    for (unsigned int j = (i > 0 ? i - 1 : 0); j <= std::min(i + 1, n - 1);
-         ++j)
+    for (unsigned int j = (i > 0 ? i - 1 : 0); j <= std::min(i + 1, n - 1); ++j)
       chain_dsp.add(i, j);
   SparsityPattern chain_pattern;
   chain_pattern.copy_from(chain_dsp);

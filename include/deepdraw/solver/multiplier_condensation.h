@@ -87,19 +87,14 @@ namespace deepdraw
       // dlambda, and dlambda = P_l (b_l - A_l x) + P_u (b_u - A_u x).
       // Coupled (B != 0): X = r C, Y = -r B, P_l = r E^-1, P_u = -E^-1;
       // otherwise (an open pair) the node rows are kept, P_l = C^-1, P_u = 0.
-      // At most 3 x 3, of the free components (fixed size: condense() runs
-      // per Newton iteration over every surface node, D96).
-      struct LocalMatrix
-      {
-        unsigned int                         size = 0;
-        std::array<std::array<double, 3>, 3> entries{};
-      };
+      // The matrices are n_free x n_free in fixed 3 x 3 storage: condense()
+      // runs per Newton iteration over every surface node (D96).
       struct LocalBlocks
       {
-        std::array<unsigned int, 3> free{};
-        unsigned int                n_free = 0;
-        LocalMatrix                 X, Y, P_l, P_u;
-        bool                        coupled = false;
+        std::array<unsigned int, 3>          free{};
+        unsigned int                         n_free = 0;
+        std::array<std::array<double, 3>, 3> X{}, Y{}, P_l{}, P_u{};
+        bool                                 coupled = false;
       };
       // Where the entries of B and C of a block, and the coupling of the
       // tool rows to its multipliers, are stored in the whole matrix
@@ -107,7 +102,7 @@ namespace deepdraw
       struct BlockPositions
       {
         std::array<std::array<std::size_t, 3>, 3> B, C;
-        std::vector<std::array<std::size_t, 3>>    tool_row;
+        std::vector<std::array<std::size_t, 3>>   tool_row;
       };
       bool
       read_blocks(const SparseMatrix<double> &matrix,

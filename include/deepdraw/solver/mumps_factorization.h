@@ -61,11 +61,11 @@ namespace deepdraw
       void
       run(int job);
 
-      DMUMPS_STRUC_C   data;
-      PatternSnapshot  analysed_pattern;
-      bool             analysed          = false;
-      unsigned int     symbolic_analyses = 0;
-      std::vector<int> row_index, column_index; // 1-based, as MUMPS wants
+      DMUMPS_STRUC_C      data;
+      PatternSnapshot     analysed_pattern;
+      bool                analysed          = false;
+      unsigned int        symbolic_analyses = 0;
+      std::vector<int>    row_index, column_index; // 1-based, as MUMPS wants
       std::vector<double> values;
       std::vector<double> right_hand_sides;
     };
