@@ -5,9 +5,10 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 # python3-paraview, python3-numpy, xvfb and xauth (which xvfb-run needs; only
-# recommended by xvfb) for the paraview test (tests/paraview/).
-packages=(libdeal.ii-dev libopenblas0-serial cmake g++ make numdiff ccache python3 gnuplot-nox
-          python3-paraview python3-numpy xvfb xauth)
+# recommended by xvfb) for the paraview test (tests/paraview/). libmumps-dev
+# comes with deal.II's PETSc and Trilinos, but deepdraw links it itself (D96).
+packages=(libdeal.ii-dev libmumps-dev libopenblas0-serial cmake g++ make numdiff ccache python3
+          gnuplot-nox python3-paraview python3-numpy xvfb xauth)
 missing=()
 for package in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" \
