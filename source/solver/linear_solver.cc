@@ -386,8 +386,6 @@ namespace deepdraw
       {
         data->reduction_reset = true;
         data->umfpack.forget_analysis();
-        if (data->mumps != nullptr)
-          data->mumps->forget_analysis();
       }
     }
 

@@ -40,6 +40,10 @@ namespace deepdraw
       // pivots of the whole (uncondensed) system's multiplier rows need
       // more than the default 20 (D64 used 400 through Amesos).
       data.icntl[index(14)] = 100;
+      // No column permutation from the values (MC64): the analysis then
+      // depends on the pattern alone, and LinearSolver keeps it from one
+      // increment to the next without changing the arithmetic (D97).
+      data.icntl[index(6)] = 0;
     }
 
 

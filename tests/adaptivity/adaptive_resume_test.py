@@ -9,7 +9,8 @@ increment 13 (two), and resumed each time. The resumed run replays the
 refinements of the checkpoint on the blank's mesh and must repeat the
 uninterrupted run: every CSV value (adaptivity.csv included) and every VTU
 byte identical, apart from wall times (the *_s columns of statistics.csv
-and adaptivity.csv) and deal.II's date line, as for fixed meshes (D55);
+and adaptivity.csv), the orderings counted in statistics.csv (D97) and
+deal.II's date line, as for fixed meshes (D55);
 the tolerance is zero."""
 import pathlib
 import signal

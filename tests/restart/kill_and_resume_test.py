@@ -6,8 +6,11 @@ a checkpoint of another model is refused.
 
 Expectation: the resumed run repeats the same arithmetic from the restored
 state, so every CSV value and every VTU byte must be identical (D55), apart
-from the columns that are wall times (statistics.csv *_s) and the date line
-deal.II writes into each VTU file. The tolerance is therefore zero.
+from the columns that are wall times (statistics.csv *_s), the count of
+orderings computed (statistics.csv symbolic_analyses: MUMPS keeps its
+analysis from one increment to the next, a resumed process computes it
+anew at its first increment, D97) and the date line deal.II writes into
+each VTU file. The tolerance is therefore zero.
 """
 import csv
 import os
@@ -64,7 +67,8 @@ def read_csv(path, skip_times):
         table = list(csv.reader(f))
     header = table[0]
     keep = [i for i, name in enumerate(header)
-            if not (skip_times and name.endswith("_s"))]
+            if not (skip_times and (name.endswith("_s")
+                                    or name == "symbolic_analyses"))]
     return [[row[i] for i in keep] for row in table]
 
 

@@ -80,11 +80,12 @@ namespace deepdraw
         const std::vector<bool>                    &constrained);
 
       // The next solve starts afresh: it leaves out exactly the decoupled
-      // unknowns it is given and analyses the pattern anew (ordering),
-      // whatever the last one did. Called at the start of each increment,
-      // so that the systems of an increment, and with them its results,
-      // depend only on the state it starts from (a resumed run repeats the
-      // same arithmetic, D55, D64).
+      // unknowns it is given and UMFPACK analyses the pattern anew (its
+      // analysis depends on the values), whatever the last one did. MUMPS
+      // keeps its analysis, which depends on the pattern alone (D97).
+      // Called at the start of each increment, so that the systems of an
+      // increment, and with them its results, depend only on the state it
+      // starts from (a resumed run repeats the same arithmetic, D55, D64).
       void
       reset_reduction();
 
