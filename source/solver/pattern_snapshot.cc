@@ -19,14 +19,6 @@ namespace deepdraw
     }
 
 
-    void
-    PatternSnapshot::clear()
-    {
-      row_start.clear();
-      columns.clear();
-    }
-
-
     bool
     PatternSnapshot::matches(const SparsityPattern &pattern) const
     {

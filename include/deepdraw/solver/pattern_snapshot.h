@@ -18,10 +18,8 @@ namespace deepdraw
     public:
       void
       take(const SparsityPattern &pattern);
-      void
-      clear();
       // Same rows and the same columns in each (cheap next to a
-      // factorisation); false after clear().
+      // factorisation); false before the first take().
       bool
       matches(const SparsityPattern &pattern) const;
 
