@@ -78,7 +78,10 @@ namespace deepdraw
       void
       back_substitute(std::vector<Vector<double>> &columns);
 
-      std::string          type;
+      std::string type;
+      // MUMPS scales rows and columns (the whole system, whose multiplier
+      // rows are scaled unlike the displacements); not the condensed one.
+      bool                 scale_matrix = true;
       UmfpackFactorization umfpack;
       // Made on first use: MUMPS needs MPI, which not every caller has.
       std::unique_ptr<MumpsFactorization>   mumps;
@@ -141,7 +144,7 @@ namespace deepdraw
       if (type == "MUMPS")
       {
         if (mumps == nullptr)
-          mumps = std::make_unique<MumpsFactorization>();
+          mumps = std::make_unique<MumpsFactorization>(scale_matrix);
         mumps->factorize(matrix);
         return;
       }
@@ -372,6 +375,8 @@ namespace deepdraw
         , implementation(std::make_unique<Implementation>())
         , condensed_implementation(std::make_unique<Implementation>())
     {
+      // Displacements only, in N/mm throughout: well scaled (D98).
+      condensed_implementation->scale_matrix = false;
     }
 
 

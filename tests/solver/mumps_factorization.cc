@@ -9,6 +9,9 @@
 // - the analysis is kept while the pattern stays (one analysis for four
 //   value sets), redone for a new pattern and after forget_analysis();
 // - two right-hand sides solved at once equal the single solves to 1e-14;
+// - of the orderings AMD and PORD, the one with fewer estimated
+//   operations is used (D98), and a factorisation without scaling gives
+//   the same solution;
 // - a singular matrix is reported with MUMPS' status, not solved;
 // - LinearSolver with `Type = MUMPS` and the holder bordered equals the
 //   dense solution to 1e-14, with one analysis for three increments
@@ -16,6 +19,7 @@
 #include "contact_like_pattern.h"
 #include "test_utilities.h"
 
+#include <algorithm>
 #include <cmath>
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
@@ -110,6 +114,77 @@ main(int argc, char *argv[])
               0);
   check_true("flops of the factorisation reported",
              mumps.factorization_flops() > 0.);
+  // D98: AMD and PORD tried, the one with fewer estimated operations kept.
+  const auto &candidates = mumps.ordering_candidates();
+  check_close("two orderings tried", candidates.size(), 2, 0);
+  const auto &cheapest
+    = *std::min_element(candidates.begin(),
+                        candidates.end(),
+                        [](const auto &a, const auto &b)
+                        { return a.estimated_flops < b.estimated_flops; });
+  std::cout << "  orderings: AMD " << candidates[0].estimated_flops << ", PORD "
+            << candidates[1].estimated_flops << " flops, used "
+            << mumps.ordering() << std::endl;
+  check_close("the cheaper ordering used",
+              mumps.ordering(),
+              cheapest.ordering,
+              0);
+
+  // A 9-point grid operator (a sheet's pattern in miniature), on which the
+  // two orderings differ: the factorisation's operations (RINFOG(3)) are
+  // the estimate of the ordering chosen, i.e. its analysis is the one
+  // kept. Diagonally dominant, so no pivot is delayed and the two agree
+  // to rounding (1e-9 relative).
+  {
+    const unsigned int     side = 40, n_grid = side * side;
+    DynamicSparsityPattern grid_dsp(n_grid, n_grid);
+    for (unsigned int i = 0; i < n_grid; ++i)
+      for (int dx = -1; dx <= 1; ++dx)
+        for (int dy = -1; dy <= 1; ++dy)
+        {
+          const int x = i % side + dx, y = i / side + dy;
+          if (x >= 0 && y >= 0 && x < int(side) && y < int(side))
+            grid_dsp.add(i, y * side + x);
+        }
+    SparsityPattern grid_pattern;
+    grid_pattern.copy_from(grid_dsp);
+    SparseMatrix<double> grid(grid_pattern);
+    for (unsigned int i = 0; i < n_grid; ++i)
+      for (auto entry = grid.begin(i); entry != grid.end(i); ++entry)
+        entry->value() = entry->column() == i ? 9. : -1. + 0.01 * (i % 7);
+    deepdraw::solver::MumpsFactorization grid_mumps(false);
+    grid_mumps.factorize(grid);
+    const auto &tried = grid_mumps.ordering_candidates();
+    const auto &fewest
+      = *std::min_element(tried.begin(),
+                          tried.end(),
+                          [](const auto &a, const auto &b)
+                          { return a.estimated_flops < b.estimated_flops; });
+    std::cout << "  grid " << side << " x " << side << ": AMD "
+              << tried[0].estimated_flops << ", PORD "
+              << tried[1].estimated_flops << " flops, used "
+              << grid_mumps.ordering() << std::endl;
+    check_true("grid: the orderings differ",
+               tried[0].estimated_flops != tried[1].estimated_flops);
+    check_close("grid: the cheaper ordering used",
+                grid_mumps.ordering(),
+                fewest.ordering,
+                0);
+    check_close("grid: its analysis kept (operations as estimated)",
+                grid_mumps.factorization_flops() / fewest.estimated_flops,
+                1.,
+                1e-9);
+  }
+
+  // Without scaling (the condensed system, D98): the same solution.
+  deepdraw::solver::MumpsFactorization unscaled(false);
+  unscaled.factorize(A);
+  Vector<double> x_unscaled;
+  unscaled.solve(b, x_unscaled);
+  check_close("unscaled: solution against the dense inverse",
+              relative_difference(x_unscaled, dense_solution(A, b)),
+              0.,
+              1e-14);
 
   std::vector<Vector<double>> columns{b, c};
   mumps.solve(columns);

@@ -22,8 +22,9 @@ namespace deepdraw
     {
     public:
       // Needs MPI to be initialised (deepdraw's main does): MUMPS runs on
-      // MPI_COMM_SELF.
-      MumpsFactorization();
+      // MPI_COMM_SELF. `scale`: MUMPS scales rows and columns in each
+      // factorisation (ICNTL(8) = 77); false for a well-scaled matrix.
+      explicit MumpsFactorization(bool scale = true);
       ~MumpsFactorization();
       MumpsFactorization(const MumpsFactorization &) = delete;
       MumpsFactorization &
@@ -52,10 +53,25 @@ namespace deepdraw
       factorization_flops() const;
       double
       factor_entries() const;
+      // The fill-reducing ordering of the analysis (INFOG(7): 0 AMD,
+      // 4 PORD) and the estimated operations (RINFOG(1)) of each ordering
+      // tried; the one with the fewest is kept.
+      struct OrderingCandidate
+      {
+        int    ordering;
+        double estimated_flops;
+      };
+      int
+      ordering() const;
+      const std::vector<OrderingCandidate> &
+      ordering_candidates() const;
 
     private:
       void
       set_up_pattern(const SparsityPattern &pattern);
+      // Analyses the pattern with each ordering; keeps the cheapest.
+      void
+      analyse();
       // Runs MUMPS with `job`; on a workspace shortage (INFOG(1) = -8, -9)
       // it doubles ICNTL(14) and repeats, up to three times.
       void
@@ -68,6 +84,7 @@ namespace deepdraw
       std::vector<int>    row_index, column_index; // 1-based, as MUMPS wants
       std::vector<double> values;
       std::vector<double> right_hand_sides;
+      std::vector<OrderingCandidate> candidates;
     };
   } // namespace solver
 } // namespace deepdraw
