@@ -433,6 +433,11 @@ namespace deepdraw
       // only as an exception with a stack trace, and a file written in
       // place could be left half written.
       std::ostringstream vtu;
+      // zlib's default level: files 0.4 % larger than deal.II's default
+      // best_compression, written in half the time (D98).
+      DataOutBase::VtkFlags flags;
+      flags.compression_level = DataOutBase::VtkFlags::default_compression;
+      data_out.set_flags(flags);
       data_out.write_vtu(vtu);
       io::write_file_atomically(path, vtu.str());
       std::vector<std::string> parts = {name.str()};
