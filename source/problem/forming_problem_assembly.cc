@@ -2,12 +2,15 @@
 // residual and exact tangent of each element technology, doc/theory.md §3)
 // and of the contact terms; the cell geometry wrt x_t is computed once per
 // increment (doc/decisions.md D13).
+#include <algorithm>
+#include <array>
 #include <atomic>
 #include <deal.II/base/timer.h>
 #include <deal.II/base/work_stream.h>
 #include <deal.II/fe/fe_values.h>
 #include <deepdraw/fe/selective_reduced_quadrature.h>
 #include <deepdraw/problem/forming_problem.h>
+#include <numeric>
 
 namespace deepdraw
 {
@@ -36,6 +39,40 @@ namespace deepdraw
         // Stands in for the enhanced parameters of elements without any.
         fe::EnhancedParameters no_enhanced_parameters;
       };
+
+      // What AffineConstraints::distribute_local_to_global adds for a cell
+      // none of whose dofs is constrained (each entry once, so the sums
+      // are the same to the last bit), without its per-cell bookkeeping:
+      // the copier is serial (D98). rhs = -residual.
+      void
+      add_unconstrained_cell(const FullMatrix<double> &matrix,
+                             const Vector<double>     &residual,
+                             const std::vector<types::global_dof_index> &dofs,
+                             SparseMatrix<double> &system_matrix,
+                             Vector<double>       &system_rhs)
+      {
+        constexpr unsigned int      n = fe::dofs_per_cell;
+        std::array<unsigned int, n> order;
+        std::iota(order.begin(), order.end(), 0u);
+        std::sort(order.begin(),
+                  order.end(),
+                  [&](const unsigned int a, const unsigned int b)
+                  { return dofs[a] < dofs[b]; });
+        std::array<types::global_dof_index, n> sorted_dofs;
+        for (unsigned int k = 0; k < n; ++k)
+          sorted_dofs[k] = dofs[order[k]];
+        std::array<double, n> row_values;
+        for (const unsigned int i : order)
+        {
+          for (unsigned int k = 0; k < n; ++k)
+            row_values[k] = matrix(i, order[k]);
+          system_matrix
+            .add(dofs[i], n, sorted_dofs.data(), row_values.data(), true, true);
+          if (residual(i) != 0.)
+            system_rhs(dofs[i]) -= residual(i);
+        }
+      }
+
 
       struct AssemblyCopy
       {
@@ -116,6 +153,19 @@ namespace deepdraw
           return;
         for (unsigned int i = 0; i < 24; ++i)
           internal_force[copy.dofs[i]] += copy.residual(i);
+        if (assemble_matrix
+            && std::none_of(copy.dofs.begin(),
+                            copy.dofs.end(),
+                            [&](const types::global_dof_index dof)
+                            { return constraints.is_constrained(dof); }))
+        {
+          add_unconstrained_cell(copy.matrix,
+                                 copy.residual,
+                                 copy.dofs,
+                                 system_matrix,
+                                 system_rhs);
+          return;
+        }
         Vector<double> rhs(copy.residual);
         rhs *= -1.;
         if (assemble_matrix)
