@@ -4,12 +4,14 @@
 #include <Epetra_Vector.h>
 #include <algorithm>
 #include <array>
+#include <deal.II/base/parallel.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deepdraw/solver/linear_solver.h>
 #include <deepdraw/solver/mumps_factorization.h>
 #include <deepdraw/solver/umfpack_factorization.h>
+#include <mutex>
 #include <stdexcept>
 
 namespace deepdraw
@@ -113,6 +115,13 @@ namespace deepdraw
       // out has a nonzero off-diagonal entry.
       bool
       copy_reduced(const SparseMatrix<double> &matrix);
+      // Rows [begin, end) of copy_reduced; the unknowns found coupled are
+      // appended to `coupled`.
+      void
+      copy_reduced_rows(const SparseMatrix<double>           &matrix,
+                        types::global_dof_index               begin,
+                        types::global_dof_index               end,
+                        std::vector<types::global_dof_index> &coupled);
 
       const SparsityPattern               *full_pattern  = nullptr;
       std::size_t                          full_nonzeros = 0;
@@ -315,10 +324,44 @@ namespace deepdraw
       border_rows.assign(n_b, Vector<double>(n_m));
       corner.reinit(n_b, n_b);
       std::vector<types::global_dof_index> coupled;
+      std::mutex                           coupled_mutex;
+      // The rows are independent: both cores (D98).
+      parallel::apply_to_subranges(
+        types::global_dof_index(0),
+        n,
+        [&](const types::global_dof_index begin,
+            const types::global_dof_index end)
+        {
+          std::vector<types::global_dof_index> found;
+          copy_reduced_rows(matrix, begin, end, found);
+          if (!found.empty())
+          {
+            std::lock_guard<std::mutex> lock(coupled_mutex);
+            coupled.insert(coupled.end(), found.begin(), found.end());
+          }
+        },
+        2048);
+      if (coupled.empty())
+        return true;
+      // Not decoupled after all: keep these from now on.
+      for (const auto j : coupled)
+        is_decoupled[j] = false;
+      build_reduction(*full_pattern, bordered_of_pattern);
+      return false;
+    }
+
+
+    void
+    LinearSolver::Implementation::copy_reduced_rows(
+      const SparseMatrix<double>           &matrix,
+      const types::global_dof_index         begin,
+      const types::global_dof_index         end,
+      std::vector<types::global_dof_index> &coupled)
+    {
       // The reduced rows keep the order of the full rows (diagonal first,
       // then ascending columns, and the renumbering is monotone): copy in
       // step instead of searching each entry.
-      for (types::global_dof_index i = 0; i < n; ++i)
+      for (types::global_dof_index i = begin; i < end; ++i)
       {
         const Role role_i = role[i];
         if (role_i == left_out)
@@ -360,13 +403,6 @@ namespace deepdraw
             corner(bi, border_position[j]) = value;
         }
       }
-      if (coupled.empty())
-        return true;
-      // Not decoupled after all: keep these from now on.
-      for (const auto j : coupled)
-        is_decoupled[j] = false;
-      build_reduction(*full_pattern, bordered_of_pattern);
-      return false;
     }
 
 

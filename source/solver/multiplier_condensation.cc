@@ -1,5 +1,7 @@
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <deal.II/base/parallel.h>
 #include <deepdraw/solver/multiplier_condensation.h>
 #include <stdexcept>
 
@@ -398,13 +400,25 @@ namespace deepdraw
           }
         }
       }
-      for (types::global_dof_index i = 0; i < n_u; ++i)
-        if (!done[i])
+      // The copied rows are independent: both cores (D98).
+      std::atomic<bool> copied{true};
+      parallel::apply_to_subranges(
+        types::global_dof_index(0),
+        n_u,
+        [&](const types::global_dof_index begin,
+            const types::global_dof_index end)
         {
-          if (!copy_row(matrix, i))
-            return false;
-          condensed_rhs[i] = rhs[i];
-        }
+          for (types::global_dof_index i = begin; i < end; ++i)
+            if (!done[i])
+            {
+              if (!copy_row(matrix, i))
+                copied = false;
+              condensed_rhs[i] = rhs[i];
+            }
+        },
+        2048);
+      if (!copied)
+        return false;
 
       // Tool rows: dlambda of every pair they hold substituted (Eq. 4.2).
       for (unsigned int t = 0; t < tool_position_dofs.size(); ++t)

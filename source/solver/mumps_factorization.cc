@@ -91,11 +91,12 @@ namespace deepdraw
       const SparsityPattern &pattern = matrix.get_sparsity_pattern();
       if (!analysed || !analysed_pattern.matches(pattern))
         set_up_pattern(pattern);
-      std::size_t k = 0;
-      for (types::global_dof_index i = 0; i < matrix.m(); ++i)
-        for (auto entry = matrix.begin(i); entry != matrix.end(i); ++entry)
-          values[k++] = entry->value();
-      data.a = values.data();
+      // The values in storage order are the coordinate entries of
+      // set_up_pattern: MUMPS reads them in place, during job 2 only. The
+      // first stored entry is (0, 0): a square pattern stores the diagonal
+      // first (checked in set_up_pattern).
+      data.a
+        = row_index.empty() ? nullptr : const_cast<double *>(&matrix(0, 0));
       if (!analysed)
         analyse();
       run(2);
@@ -214,20 +215,25 @@ namespace deepdraw
     }
 
 
-    // Coordinate format in the order of deal.II's rows (MUMPS accepts any
-    // order): the values are then copied in step.
+    // Coordinate format in the storage order of the compressed pattern
+    // (MUMPS accepts any order), which is that of the matrix's values.
     void
     MumpsFactorization::set_up_pattern(const SparsityPattern &pattern)
     {
+      AssertThrow(pattern.is_compressed()
+                    && pattern.n_rows() == pattern.n_cols()
+                    && (pattern.n_rows() == 0
+                        || pattern.begin(0)->column() == 0),
+                  ExcMessage("MUMPS: a compressed square pattern is needed"));
       analysed_pattern.take(pattern);
       row_index.resize(pattern.n_nonzero_elements());
       column_index.resize(pattern.n_nonzero_elements());
-      values.resize(pattern.n_nonzero_elements());
       std::size_t k = 0;
       for (types::global_dof_index i = 0; i < pattern.n_rows(); ++i)
         for (auto entry = pattern.begin(i); entry != pattern.end(i);
              ++entry, ++k)
         {
+          AssertThrow(entry->global_index() == k, ExcInternalError());
           row_index[k]    = i + 1;
           column_index[k] = entry->column() + 1;
         }

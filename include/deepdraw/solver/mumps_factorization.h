@@ -82,7 +82,6 @@ namespace deepdraw
       bool                analysed          = false;
       unsigned int        symbolic_analyses = 0;
       std::vector<int>    row_index, column_index; // 1-based, as MUMPS wants
-      std::vector<double> values;
       std::vector<double> right_hand_sides;
       std::vector<OrderingCandidate> candidates;
     };
