@@ -137,6 +137,8 @@ namespace deepdraw
       FullMatrix<double>          corner;
       LinearSolver::Statistics    statistics;
       bool                        reduction_reset = false;
+      // Unknowns the current reduction leaves out.
+      types::global_dof_index n_left_out = 0;
     };
 
 
@@ -241,10 +243,13 @@ namespace deepdraw
       is_decoupled.assign(n, false);
       for (const auto i : decoupled)
         is_decoupled[i] = true;
-      bool rebuild = full_pattern != &pattern
-                     || full_nonzeros != pattern.n_nonzero_elements()
-                     || bordered_of_pattern != bordered || role.size() != n
-                     || reduction_reset;
+      bool rebuild
+        = full_pattern != &pattern
+          || full_nonzeros != pattern.n_nonzero_elements()
+          || bordered_of_pattern != bordered || role.size() != n
+          || (reduction_reset && (n_left_out > 0 || !decoupled.empty()));
+      // A reset cannot change a reduction that leaves nothing out before or
+      // after (that of the condensed system): it is kept (D98).
       reduction_reset                = false;
       types::global_dof_index n_kept = 0, n_kept_decoupled = 0;
       for (types::global_dof_index i = 0; i < n && !rebuild; ++i)
@@ -272,9 +277,13 @@ namespace deepdraw
     {
       const types::global_dof_index n = pattern.n_rows();
       role.assign(n, kept);
+      n_left_out = 0;
       for (types::global_dof_index i = 0; i < n; ++i)
         if (is_decoupled[i])
+        {
           role[i] = left_out;
+          ++n_left_out;
+        }
       border_position.assign(n, -1);
       for (unsigned int k = 0; k < bordered.size(); ++k)
       {
@@ -464,6 +473,8 @@ namespace deepdraw
         return;
       }
       condensation = std::make_unique<MultiplierCondensation>();
+      // A new condensed pattern, possibly at the old one's address.
+      condensed_implementation->full_pattern = nullptr;
       condensation->initialize(pattern,
                                n_displacements,
                                blocks,
