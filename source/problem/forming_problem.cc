@@ -271,6 +271,7 @@ namespace deepdraw
       contact.add_sparsity(dsp);
       sparsity_pattern.copy_from(dsp);
       system_matrix.reinit(sparsity_pattern);
+      find_cell_matrix_positions();
       std::vector<bool> constrained(n_unknowns, false);
       for (const auto &line : homogeneous_constraints.get_lines())
         constrained[line.index] = true;

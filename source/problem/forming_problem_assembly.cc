@@ -10,7 +10,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deepdraw/fe/selective_reduced_quadrature.h>
 #include <deepdraw/problem/forming_problem.h>
-#include <numeric>
+#include <limits>
 
 namespace deepdraw
 {
@@ -32,6 +32,39 @@ namespace deepdraw
     }
 
 
+    void
+    FormingProblem::find_cell_matrix_positions()
+    {
+      constexpr unsigned int n = fe::dofs_per_cell;
+      AssertThrow(sparsity_pattern.n_nonzero_elements()
+                    < std::numeric_limits<unsigned int>::max(),
+                  ExcMessage("more matrix entries than unsigned int holds"));
+      // matrix_values (assemble) starts at the entry (0, 0): a square
+      // compressed pattern stores each row's diagonal first.
+      AssertThrow(sparsity_pattern.n_rows() == 0
+                    || sparsity_pattern(0, 0) == 0,
+                  ExcInternalError());
+      cell_matrix_positions.resize(std::size_t(triangulation.n_active_cells())
+                                   * n * n);
+      std::vector<types::global_dof_index> dofs(n);
+      for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(dofs);
+        unsigned int *positions =
+          &cell_matrix_positions[std::size_t(cell->active_cell_index()) * n
+                                 * n];
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < n; ++j)
+          {
+            const std::size_t position = sparsity_pattern(dofs[i], dofs[j]);
+            AssertThrow(position != SparsityPattern::invalid_entry,
+                        ExcInternalError());
+            positions[i * n + j] = position;
+          }
+      }
+    }
+
+
     namespace
     {
       struct AssemblyScratch
@@ -41,36 +74,26 @@ namespace deepdraw
       };
 
       // What AffineConstraints::distribute_local_to_global adds for a cell
-      // none of whose dofs is constrained (each entry once, so the sums
-      // are the same to the last bit), without its per-cell bookkeeping:
-      // the copier is serial (D98). rhs = -residual.
+      // none of whose dofs is constrained, through the entries' positions
+      // in the matrix's values (find_cell_matrix_positions): each entry
+      // gets the same one addition per cell, in the serial copier's cell
+      // order, so the sums are the same to the last bit (D98, D99).
+      // rhs = -residual.
       void
       add_unconstrained_cell(const FullMatrix<double> &matrix,
                              const Vector<double>     &residual,
                              const std::vector<types::global_dof_index> &dofs,
-                             SparseMatrix<double> &system_matrix,
-                             Vector<double>       &system_rhs)
+                             const unsigned int *positions,
+                             double             *matrix_values,
+                             Vector<double>     &system_rhs)
       {
-        constexpr unsigned int      n = fe::dofs_per_cell;
-        std::array<unsigned int, n> order;
-        std::iota(order.begin(), order.end(), 0u);
-        std::sort(order.begin(),
-                  order.end(),
-                  [&](const unsigned int a, const unsigned int b)
-                  { return dofs[a] < dofs[b]; });
-        std::array<types::global_dof_index, n> sorted_dofs;
-        for (unsigned int k = 0; k < n; ++k)
-          sorted_dofs[k] = dofs[order[k]];
-        std::array<double, n> row_values;
-        for (const unsigned int i : order)
-        {
-          for (unsigned int k = 0; k < n; ++k)
-            row_values[k] = matrix(i, order[k]);
-          system_matrix
-            .add(dofs[i], n, sorted_dofs.data(), row_values.data(), true, true);
+        constexpr unsigned int n     = fe::dofs_per_cell;
+        const double          *local = &matrix(0, 0);
+        for (unsigned int k = 0; k < n * n; ++k)
+          matrix_values[positions[k]] += local[k];
+        for (unsigned int i = 0; i < n; ++i)
           if (residual(i) != 0.)
             system_rhs(dofs[i]) -= residual(i);
-        }
       }
 
 
@@ -80,7 +103,8 @@ namespace deepdraw
         Vector<double>     residual = Vector<double>(24);
         std::vector<types::global_dof_index> dofs
           = std::vector<types::global_dof_index>(24);
-        bool active = false;
+        unsigned int cell_index = 0;
+        bool         active     = false;
       };
     } // namespace
 
@@ -106,6 +130,12 @@ namespace deepdraw
         system_matrix = 0.;
       system_rhs     = 0.;
       internal_force = 0.;
+      // The values array of system_matrix (as MumpsFactorization reads
+      // it): entry k of the pattern is matrix_values[k].
+      double *matrix_values
+        = system_matrix.n_nonzero_elements() > 0
+            ? const_cast<double *>(&system_matrix(0, 0))
+            : nullptr;
       std::atomic<int>          worst_status{0};
       std::atomic<unsigned int> plastic_points{0};
 
@@ -117,6 +147,7 @@ namespace deepdraw
         copy.active = false;
         cell->get_dof_indices(copy.dofs);
         const unsigned int index = cell->active_cell_index();
+        copy.cell_index          = index;
         double             cell_du[fe::dofs_per_cell];
         for (unsigned int i = 0; i < fe::dofs_per_cell; ++i)
           cell_du[i] = du[copy.dofs[i]];
@@ -159,11 +190,14 @@ namespace deepdraw
                             [&](const types::global_dof_index dof)
                             { return constraints.is_constrained(dof); }))
         {
-          add_unconstrained_cell(copy.matrix,
-                                 copy.residual,
-                                 copy.dofs,
-                                 system_matrix,
-                                 system_rhs);
+          add_unconstrained_cell(
+            copy.matrix,
+            copy.residual,
+            copy.dofs,
+            &cell_matrix_positions[std::size_t(copy.cell_index)
+                                   * fe::dofs_per_cell * fe::dofs_per_cell],
+            matrix_values,
+            system_rhs);
           return;
         }
         Vector<double> rhs(copy.residual);

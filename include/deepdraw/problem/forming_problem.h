@@ -236,6 +236,9 @@ namespace deepdraw
         AffineConstraints<double> &constraints) const;
       void
       update_cell_geometry();
+      // cell_matrix_positions for the current dofs and sparsity pattern.
+      void
+      find_cell_matrix_positions();
       void
       set_up_prescribed_increment(double old_load, double new_load);
       // Assembles f_int, the residual (rhs = -r on free dofs) and, if
@@ -383,6 +386,11 @@ namespace deepdraw
       std::vector<Point<3>>                               dof_initial_position;
       std::vector<unsigned int>                           dof_component;
       std::vector<fe::CellGeometry>                       cell_geometry;
+      // Per active cell, where the entries of its 24 x 24 matrix (row-major,
+      // local order) lie in system_matrix's values: the serial copier adds
+      // through them instead of searching the rows (D99). Rebuilt with the
+      // sparsity pattern.
+      std::vector<unsigned int> cell_matrix_positions;
       std::array<std::vector<types::global_dof_index>, 6> face_dofs;
       // Mean in-plane element size of the blank's mesh (contact
       // augmentation, D34, D82).
