@@ -22,8 +22,10 @@
 #include <deepdraw/io/printable_text.h>
 #include <deepdraw/problem/command_line.h>
 #include <deepdraw/problem/forming_problem.h>
+#include <filesystem>
 #include <iostream>
 #include <string>
+#include <system_error>
 #include <vector>
 
 namespace
@@ -117,26 +119,61 @@ namespace
   // deepdraw is one process: MPI serves MUMPS and Trilinos on one rank
   // only. Started without a launcher (mpirun sets OMPI_COMM_WORLD_SIZE),
   // Open MPI probes the network transports (UCX, OFI) for 0.2 s of every
-  // run; the in-process ones chosen here start at once (D98). Its runtime
-  // daemon is still started: the daemon-less singleton shares a session
-  // directory among concurrent runs and fails. A setting the user made
-  // wins.
-  void
-  choose_single_process_mpi()
+  // run; the in-process ones chosen here start at once (D98). Nor does it
+  // need the runtime daemon (0.1 s more): the daemon-less singleton runs
+  // with a session directory under a base of this process's own, since
+  // concurrent singletons under one base share a directory and fail (D98,
+  // D99). A setting the user made wins; a study's parent deepdraw passes
+  // its base on in the environment, which a child replaces by its own.
+  class SingleProcessMpi
   {
-    if (std::getenv("OMPI_COMM_WORLD_SIZE") != nullptr
-        || std::getenv("PMIX_RANK") != nullptr)
-      return;
-    setenv("OMPI_MCA_pml", "ob1", 0);
-    setenv("OMPI_MCA_btl", "self", 0);
-  }
+  public:
+    SingleProcessMpi()
+    {
+      if (std::getenv("OMPI_COMM_WORLD_SIZE") != nullptr
+          || std::getenv("PMIX_RANK") != nullptr)
+        return;
+      setenv("OMPI_MCA_pml", "ob1", 0);
+      setenv("OMPI_MCA_btl", "self", 0);
+      const char *base   = std::getenv("OMPI_MCA_orte_tmpdir_base");
+      const char *parent = std::getenv("DEEPDRAW_MPI_SESSION_BASE");
+      if ((base != nullptr
+           && (parent == nullptr || std::string(base) != parent))
+          || std::getenv("OMPI_MCA_ess_singleton_isolated") != nullptr)
+        return;
+      const char *temporary = std::getenv("TMPDIR");
+      std::string pattern   = std::string(temporary != nullptr && *temporary
+                                            ? temporary
+                                            : "/tmp")
+                            + "/deepdraw-mpi-XXXXXX";
+      if (mkdtemp(pattern.data()) == nullptr)
+        return; // the daemon as before
+      session_base = pattern;
+      setenv("OMPI_MCA_orte_tmpdir_base", session_base.c_str(), 1);
+      setenv("DEEPDRAW_MPI_SESSION_BASE", session_base.c_str(), 1);
+      setenv("OMPI_MCA_ess_singleton_isolated", "1", 1);
+    }
+
+    // After MPI_Finalize (declared before MPI_InitFinalize in main), which
+    // removes Open MPI's own session directories.
+    ~SingleProcessMpi()
+    {
+      if (session_base.empty())
+        return;
+      std::error_code ignored;
+      std::filesystem::remove_all(session_base, ignored);
+    }
+
+  private:
+    std::string session_base;
+  };
 } // namespace
 
 
 int
 main(int argc, char *argv[])
 {
-  choose_single_process_mpi();
+  const SingleProcessMpi single_process_mpi;
   // As many threads as cores (or DEAL_II_NUM_THREADS): the element
   // assembly runs in a WorkStream loop whose copier adds the cells in a
   // fixed order, so the results do not depend on the thread count (D61).
