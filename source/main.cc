@@ -9,8 +9,10 @@
 // app::run_study (study.h), which runs this executable once per value; exit
 // codes in doc/user_guide.md §1 and §5.
 #include <algorithm>
+#include <cerrno>
 #include <csignal>
 #include <cstdlib>
+#include <cstring>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
@@ -25,7 +27,9 @@
 #include <filesystem>
 #include <iostream>
 #include <string>
+#include <sys/types.h>
 #include <system_error>
+#include <unistd.h>
 #include <vector>
 
 namespace
@@ -141,11 +145,12 @@ namespace
            && (parent == nullptr || std::string(base) != parent))
           || std::getenv("OMPI_MCA_ess_singleton_isolated") != nullptr)
         return;
-      const char *temporary = std::getenv("TMPDIR");
-      std::string pattern   = std::string(temporary != nullptr && *temporary
-                                            ? temporary
-                                            : "/tmp")
-                            + "/deepdraw-mpi-XXXXXX";
+      const char       *temporary = std::getenv("TMPDIR");
+      const std::string directory =
+        temporary != nullptr && *temporary ? temporary : "/tmp";
+      remove_bases_of_ended_processes(directory);
+      std::string pattern = directory + "/" + base_prefix
+                            + std::to_string(getpid()) + "-XXXXXX";
       if (mkdtemp(pattern.data()) == nullptr)
         return; // the daemon as before
       session_base = pattern;
@@ -165,6 +170,26 @@ namespace
     }
 
   private:
+    static constexpr const char *base_prefix = "deepdraw-mpi-";
+
+    // A run killed with SIGKILL cannot remove its base: the next start
+    // removes those whose process (the number in the name) has ended.
+    static void
+    remove_bases_of_ended_processes(const std::string &directory)
+    {
+      std::error_code error;
+      for (const auto &entry :
+           std::filesystem::directory_iterator(directory, error))
+      {
+        const std::string name = entry.path().filename().string();
+        if (name.rfind(base_prefix, 0) != 0)
+          continue;
+        const pid_t pid = std::atoi(name.c_str() + std::strlen(base_prefix));
+        if (pid > 0 && kill(pid, 0) != 0 && errno == ESRCH)
+          std::filesystem::remove_all(entry.path(), error);
+      }
+    }
+
     std::string session_base;
   };
 } // namespace
