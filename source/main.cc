@@ -146,11 +146,11 @@ namespace
           || std::getenv("OMPI_MCA_ess_singleton_isolated") != nullptr)
         return;
       const char       *temporary = std::getenv("TMPDIR");
-      const std::string directory =
-        temporary != nullptr && *temporary ? temporary : "/tmp";
+      const std::string directory
+        = temporary != nullptr && *temporary ? temporary : "/tmp";
       remove_bases_of_ended_processes(directory);
-      std::string pattern = directory + "/" + base_prefix
-                            + std::to_string(getpid()) + "-XXXXXX";
+      std::string pattern
+        = directory + "/" + base_prefix + std::to_string(getpid()) + "-XXXXXX";
       if (mkdtemp(pattern.data()) == nullptr)
         return; // the daemon as before
       session_base = pattern;

@@ -41,8 +41,7 @@ namespace deepdraw
                   ExcMessage("more matrix entries than unsigned int holds"));
       // matrix_values (assemble) starts at the entry (0, 0): a square
       // compressed pattern stores each row's diagonal first.
-      AssertThrow(sparsity_pattern.n_rows() == 0
-                    || sparsity_pattern(0, 0) == 0,
+      AssertThrow(sparsity_pattern.n_rows() == 0 || sparsity_pattern(0, 0) == 0,
                   ExcInternalError());
       cell_matrix_positions.resize(std::size_t(triangulation.n_active_cells())
                                    * n * n);
@@ -50,9 +49,9 @@ namespace deepdraw
       for (const auto &cell : dof_handler.active_cell_iterators())
       {
         cell->get_dof_indices(dofs);
-        unsigned int *positions =
-          &cell_matrix_positions[std::size_t(cell->active_cell_index()) * n
-                                 * n];
+        unsigned int *positions
+          = &cell_matrix_positions[std::size_t(cell->active_cell_index()) * n
+                                   * n];
         for (unsigned int i = 0; i < n; ++i)
           for (unsigned int j = 0; j < n; ++j)
           {
@@ -132,11 +131,10 @@ namespace deepdraw
       internal_force = 0.;
       // The values array of system_matrix (as MumpsFactorization reads
       // it): entry k of the pattern is matrix_values[k].
-      double *matrix_values
-        = system_matrix.n_nonzero_elements() > 0
-            ? const_cast<double *>(&system_matrix(0, 0))
-            : nullptr;
-      std::atomic<int>          worst_status{0};
+      double          *matrix_values = system_matrix.n_nonzero_elements() > 0
+                                         ? const_cast<double *>(&system_matrix(0, 0))
+                                         : nullptr;
+      std::atomic<int> worst_status{0};
       std::atomic<unsigned int> plastic_points{0};
 
       auto worker
@@ -148,7 +146,7 @@ namespace deepdraw
         cell->get_dof_indices(copy.dofs);
         const unsigned int index = cell->active_cell_index();
         copy.cell_index          = index;
-        double             cell_du[fe::dofs_per_cell];
+        double cell_du[fe::dofs_per_cell];
         for (unsigned int i = 0; i < fe::dofs_per_cell; ++i)
           cell_du[i] = du[copy.dofs[i]];
         const unsigned int      first_point = index * fe::n_weighted_points;

@@ -390,7 +390,7 @@ namespace deepdraw
       // local order) lie in system_matrix's values: the serial copier adds
       // through them instead of searching the rows (D99). Rebuilt with the
       // sparsity pattern.
-      std::vector<unsigned int> cell_matrix_positions;
+      std::vector<unsigned int>                           cell_matrix_positions;
       std::array<std::vector<types::global_dof_index>, 6> face_dofs;
       // Mean in-plane element size of the blank's mesh (contact
       // augmentation, D34, D82).
