@@ -139,11 +139,15 @@ namespace
         return;
       setenv("OMPI_MCA_pml", "ob1", 0);
       setenv("OMPI_MCA_btl", "self", 0);
+      // Both Open MPI settings are a parent deepdraw's when its marker
+      // names the base; otherwise either one is the user's.
       const char *base   = std::getenv("OMPI_MCA_orte_tmpdir_base");
       const char *parent = std::getenv("DEEPDRAW_MPI_SESSION_BASE");
-      if ((base != nullptr
-           && (parent == nullptr || std::string(base) != parent))
-          || std::getenv("OMPI_MCA_ess_singleton_isolated") != nullptr)
+      const bool  inherited
+        = base != nullptr && parent != nullptr && std::string(base) == parent;
+      if (!inherited
+          && (base != nullptr
+              || std::getenv("OMPI_MCA_ess_singleton_isolated") != nullptr))
         return;
       const char       *temporary = std::getenv("TMPDIR");
       const std::string directory

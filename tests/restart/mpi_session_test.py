@@ -90,6 +90,33 @@ def main():
     if bases(temporary):
         failures.append(f"after SIGKILL and a new start: {bases(temporary)}")
 
+    # A study's child inherits its parent's base and isolated mode in the
+    # environment: it makes a base of its own all the same (sharing one is
+    # what failed in D98).
+    parent_base = temporary / f"{PREFIX}{os.getpid()}-parent"
+    parent_base.mkdir()
+    child_environment = dict(environment)
+    child_environment.update({
+        "OMPI_MCA_orte_tmpdir_base": str(parent_base),
+        "DEEPDRAW_MPI_SESSION_BASE": str(parent_base),
+        "OMPI_MCA_ess_singleton_isolated": "1"})
+    child = subprocess.Popen([args.deepdraw, str(PRM), "--output-directory",
+                              str(work / "child")], env=child_environment,
+                             cwd=work, stdout=subprocess.DEVNULL,
+                             stderr=subprocess.DEVNULL)
+    deadline = time.time() + 60
+    own = []
+    while not own and time.time() < deadline and child.poll() is None:
+        own = [b for b in bases(temporary)
+               if b.startswith(f"{PREFIX}{child.pid}-")]
+        time.sleep(0.01)
+    child.kill()
+    child.wait(timeout=60)
+    if not own:
+        failures.append("a study's child ran under its parent's base")
+    parent_base.rmdir()
+    help_run(args.deepdraw, environment)
+
     # Concurrent starts: every one succeeds, nothing is left.
     starts = [subprocess.Popen([args.deepdraw, "--help"], env=environment,
                                stdout=subprocess.DEVNULL,
