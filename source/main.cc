@@ -5,7 +5,7 @@
 //   deepdraw --write-square-cup-tools DIR [FILE.prm]
 //   deepdraw --help
 //   deepdraw --print-parameters
-// A run is problem::run_command_line (command_line.h); a study is
+// A run is app::run_command_line (command_line.h); a study is
 // app::run_study (study.h), which runs this executable once per value; exit
 // codes in doc/user_guide.md §1 and §5.
 #include <algorithm>
@@ -16,13 +16,13 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
+#include <deepdraw/app/command_line.h>
 #include <deepdraw/app/study.h>
 #include <deepdraw/geometry/cad_tool_writer.h>
 #include <deepdraw/geometry/square_cup_tools.h>
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/io/parameter_file.h>
 #include <deepdraw/io/printable_text.h>
-#include <deepdraw/problem/command_line.h>
 #include <deepdraw/problem/forming_problem.h>
 #include <filesystem>
 #include <iostream>
@@ -219,5 +219,5 @@ main(int argc, char *argv[])
   if (std::find(arguments.begin(), arguments.end(), "--study")
       != arguments.end())
     return run_study(arguments);
-  return deepdraw::problem::run_command_line(arguments);
+  return deepdraw::app::run_command_line(arguments);
 }

@@ -11,12 +11,12 @@
 #include <deepdraw/app/study_plot.h>
 #include <deepdraw/app/study_run.h>
 #include <deepdraw/app/study_table.h>
+#include <deepdraw/blank/blank_geometry.h>
+#include <deepdraw/contact/contact_coupling.h>
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/io/output_parameters.h>
-#include <deepdraw/problem/blank_geometry.h>
-#include <deepdraw/problem/contact_coupling.h>
 #include <deepdraw/problem/forming_problem.h>
-#include <deepdraw/problem/process_parameters.h>
+#include <deepdraw/process/process_parameters.h>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -103,7 +103,7 @@ namespace deepdraw
       {
         const fs::path directory = fs::absolute(prm_file).parent_path();
         std::string    text;
-        for (unsigned int slot = 0; slot < problem::n_tool_slots; ++slot)
+        for (unsigned int slot = 0; slot < contact::n_tool_slots; ++slot)
         {
           const std::string tool = "Tool " + std::to_string(slot + 1);
           if (!is_declared(prm, {"Contact", tool}, "File"))
@@ -134,14 +134,14 @@ namespace deepdraw
                     StudyCase         &run,
                     double            &final_load)
       {
-        problem::BlankGeometry geometry;
+        blank::BlankGeometry geometry;
         geometry
           .parse_parameters(prm, fs::absolute(prm_file).parent_path().string());
         // The rectangle: the larger side of its cells; other outlines: the
         // mean in-plane size of the mesh's cells.
         double size = std::max(geometry.length / geometry.elements_along_x,
                                geometry.width / geometry.elements_along_y);
-        if (geometry.outline != problem::BlankGeometry::Outline::rectangle)
+        if (geometry.outline != blank::BlankGeometry::Outline::rectangle)
         {
           Triangulation<3> mesh;
           geometry.create_mesh(mesh);
@@ -152,7 +152,7 @@ namespace deepdraw
           = size / (geometry.thickness / geometry.layers_through_thickness);
         if (geometry.layers_through_thickness == 1)
           run.remark = one_layer_remark;
-        problem::ProcessParameters process;
+        process::ProcessParameters process;
         process.parse_parameters(prm);
         final_load = process.final_load;
       }
@@ -256,7 +256,7 @@ namespace deepdraw
                                    : output_directory;
         setup.draw_in_names    = draw_in_names(prm);
 
-        problem::ProcessParameters process;
+        process::ProcessParameters process;
         process.parse_parameters(prm);
         // The travels of the thickness profiles a run can reach (as
         // FormingProblem keeps them): up to the largest final load of the

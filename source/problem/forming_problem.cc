@@ -24,24 +24,24 @@ namespace deepdraw
     void
     FormingProblem::declare_parameters(ParameterHandler &prm)
     {
-      BlankGeometry::declare_parameters(prm);
-      ProcessParameters::declare_parameters(prm);
-      ProcessTables::declare_parameters(prm);
+      blank::BlankGeometry::declare_parameters(prm);
+      process::ProcessParameters::declare_parameters(prm);
+      postprocess::ProcessTables::declare_parameters(prm);
       prm.enter_subsection("Material");
       material::MaterialParameters::declare_parameters(prm);
       prm.leave_subsection();
       prm.enter_subsection("Finite element");
       fe::ElementParameters::declare_parameters(prm);
       prm.leave_subsection();
-      PrescribedDisplacements::declare_parameters(prm);
+      process::PrescribedDisplacements::declare_parameters(prm);
       solver::IncrementControlParameters::declare_parameters(prm);
       solver::NewtonParameters::declare_parameters(prm);
       solver::LinearSolverParameters::declare_parameters(prm);
       io::OutputParameters::declare_parameters(prm);
       geometry::SquareCupToolParameters::declare_parameters(prm);
-      ContactCoupling::declare_parameters(prm);
-      CheckpointParameters::declare_parameters(prm);
-      AdaptivityParameters::declare_parameters(prm);
+      contact::ContactCoupling::declare_parameters(prm);
+      state::CheckpointParameters::declare_parameters(prm);
+      adaptivity::AdaptivityParameters::declare_parameters(prm);
     }
 
 
@@ -75,7 +75,7 @@ namespace deepdraw
                                process_parameters.blank_holder_force);
       checkpoint_parameters.parse_parameters(prm);
       adaptivity_parameters.parse_parameters(prm);
-      parameter_listing = flatten_parameters(prm);
+      parameter_listing = state::flatten_parameters(prm);
       check_input();
 
       // Thickness profiles are square-cup tables: runs with tools only.
@@ -112,7 +112,7 @@ namespace deepdraw
       // before, to the bit); the contact augmentation keeps it on refined
       // meshes (D82).
       blank_element_size
-        = geometry.outline == BlankGeometry::Outline::rectangle
+        = geometry.outline == blank::BlankGeometry::Outline::rectangle
             ? std::sqrt(geometry.length / geometry.elements_along_x
                         * geometry.width / geometry.elements_along_y)
             : std::sqrt(GridTools::volume(triangulation) / geometry.thickness
@@ -144,7 +144,7 @@ namespace deepdraw
       trial_enhanced_parameters = state.enhanced_parameters;
 
       reaction_faces.clear();
-      for (const PrescribedDisplacement &entry : prescribed.entries)
+      for (const process::PrescribedDisplacement &entry : prescribed.entries)
         if (std::find(reaction_faces.begin(),
                       reaction_faces.end(),
                       entry.boundary_id)
@@ -220,8 +220,9 @@ namespace deepdraw
           vertices.end());
 
       // Prescribed dofs; a later entry overrides an earlier one.
-      std::map<types::global_dof_index, const PrescribedDisplacement *> owner;
-      for (const PrescribedDisplacement &entry : prescribed.entries)
+      std::map<types::global_dof_index, const process::PrescribedDisplacement *>
+        owner;
+      for (const process::PrescribedDisplacement &entry : prescribed.entries)
         for (const unsigned int vertex : face_vertices[entry.boundary_id])
           owner[vertex_dofs[vertex][entry.component]] = &entry;
       prescribed_dofs.assign(owner.begin(), owner.end());
@@ -294,9 +295,10 @@ namespace deepdraw
       // on the initial surfaces of the current mesh (D72); on a refined
       // mesh the refined faces, hanging vertices included (D85).
       sheet_thickness
-        = std::make_unique<SheetThickness>(triangulation, initial_vertices);
+        = std::make_unique<blank::SheetThickness>(triangulation,
+                                                  initial_vertices);
       vertex_locations.assign(initial_vertices.size(),
-                              SheetThickness::Location());
+                              blank::SheetThickness::Location());
       for (const auto &cell : triangulation.active_cell_iterators())
         for (const unsigned int v : cell->vertex_indices())
         {
@@ -440,7 +442,7 @@ namespace deepdraw
     }
 
 
-    const SimulationState &
+    const state::SimulationState &
     FormingProblem::get_state() const
     {
       return state;
@@ -461,7 +463,7 @@ namespace deepdraw
     }
 
 
-    const SheetThickness &
+    const blank::SheetThickness &
     FormingProblem::get_sheet_thickness() const
     {
       return *sheet_thickness;
@@ -475,7 +477,7 @@ namespace deepdraw
     }
 
 
-    const ContactCoupling &
+    const contact::ContactCoupling &
     FormingProblem::get_contact() const
     {
       return contact;

@@ -1,16 +1,16 @@
 // Adaptive refinement during the run (subsection Adaptivity, doc/theory.md
 // §8, D80-D85): between converged increments the indicator flags cells,
 // the mesh is refined and the committed state carried over (state_transfer.h,
-// ContactCoupling::transfer), the system is rebuilt with the hanging-node
-// constraints, and one Newton solve at the same load restores equilibrium
-// before the next increment.
+// contact::ContactCoupling::transfer), the system is rebuilt with the
+// hanging-node constraints, and one Newton solve at the same load restores
+// equilibrium before the next increment.
 #include <deal.II/base/timer.h>
+#include <deepdraw/adaptivity/refinement_indicator.h>
+#include <deepdraw/adaptivity/state_transfer.h>
+#include <deepdraw/blank/nodal_surface_area.h>
 #include <deepdraw/fe/vertex_parents.h>
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/problem/forming_problem.h>
-#include <deepdraw/problem/nodal_surface_area.h>
-#include <deepdraw/problem/refinement_indicator.h>
-#include <deepdraw/problem/state_transfer.h>
 #include <map>
 
 namespace deepdraw
@@ -20,13 +20,17 @@ namespace deepdraw
     bool
     FormingProblem::adapt_mesh(const bool last_increment, std::string &reason)
     {
-      const AdaptivityParameters &parameters = adaptivity_parameters;
+      const adaptivity::AdaptivityParameters &parameters
+        = adaptivity_parameters;
       if (!parameters.enabled || last_increment
           || state.increment_number % parameters.interval != 0)
         return true;
       Timer                     timer;
       const std::vector<double> indicator = scaled_refinement_indicator();
-      if (flag_cells_for_refinement(triangulation, indicator, 1., parameters)
+      if (adaptivity::flag_cells_for_refinement(triangulation,
+                                                indicator,
+                                                1.,
+                                                parameters)
           == 0)
         return true;
 
@@ -101,35 +105,36 @@ namespace deepdraw
     std::vector<double>
     FormingProblem::scaled_refinement_indicator() const
     {
-      const AdaptivityParameters &parameters = adaptivity_parameters;
+      const adaptivity::AdaptivityParameters &parameters
+        = adaptivity_parameters;
       if (parameters.indicator == "region")
-        return scaled(region_indicator(triangulation,
-                                       initial_vertices,
-                                       parameters.region_min,
-                                       parameters.region_max),
+        return scaled(adaptivity::region_indicator(triangulation,
+                                                   initial_vertices,
+                                                   parameters.region_min,
+                                                   parameters.region_max),
                       0.5);
       std::vector<double> result;
       if (parameters.indicator != "tool curvature")
       {
-        result = plastic_strain_jump(triangulation, state.history);
+        result = adaptivity::plastic_strain_jump(triangulation, state.history);
         // In-plane refinement with the smooth placement refines whole
         // columns (D89); the tool-curvature indicator does so itself.
         if (parameters.refinement == "in_plane"
             && parameters.vertex_placement == "smooth")
-          result = column_maximum(triangulation, result);
+          result = adaptivity::column_maximum(triangulation, result);
         result = scaled(result, parameters.jump_threshold);
       }
       if (parameters.indicator != "plastic strain jump")
       {
         // h kappa of the tools (D94).
         std::vector<unsigned int> sheet_faces;
-        for (const ToolDefinition &tool : contact.tool_definitions())
+        for (const contact::ToolDefinition &tool : contact.tool_definitions())
           sheet_faces.push_back(tool.sheet_face);
         const std::vector<double> curvature
-          = scaled(tool_curvature_indicator(triangulation,
-                                            contact.tools(),
-                                            sheet_faces,
-                                            geometry.thickness),
+          = scaled(adaptivity::tool_curvature_indicator(triangulation,
+                                                        contact.tools(),
+                                                        sheet_faces,
+                                                        geometry.thickness),
                    parameters.curvature_threshold);
         if (result.empty())
           return curvature;
@@ -143,25 +148,28 @@ namespace deepdraw
     void
     FormingProblem::refine_and_rebuild()
     {
-      const unsigned int        n_old_vertices = triangulation.n_vertices();
-      ContactCoupling::Snapshot contact_snapshot;
-      std::vector<double>       old_area;
+      const unsigned int n_old_vertices = triangulation.n_vertices();
+      contact::ContactCoupling::Snapshot contact_snapshot;
+      std::vector<double>                old_area;
       if (contact.active())
       {
         contact_snapshot = contact.snapshot(state.converged_solution,
                                             state.previous_converged_solution);
-        old_area         = nodal_surface_area(triangulation);
+        old_area         = blank::nodal_surface_area(triangulation);
       }
-      TransferOptions options;
+      adaptivity::TransferOptions options;
       options.vertex_placement
         = adaptivity_parameters.vertex_placement == "smooth"
-            ? VertexPlacement::smooth
-            : VertexPlacement::linear;
+            ? adaptivity::VertexPlacement::smooth
+            : adaptivity::VertexPlacement::linear;
       options.history = adaptivity_parameters.history_transfer == "interpolated"
-                          ? HistoryTransfer::interpolated
-                          : HistoryTransfer::nearest;
+                          ? adaptivity::HistoryTransfer::interpolated
+                          : adaptivity::HistoryTransfer::nearest;
       options.material = material.get();
-      refine_and_transfer(triangulation, dof_handler, state, options);
+      adaptivity::refine_and_transfer(triangulation,
+                                      dof_handler,
+                                      state,
+                                      options);
       const std::vector<fe::VertexParents> parents
         = fe::vertex_parents(triangulation, n_old_vertices);
       add_blank_parents(parents, n_old_vertices);
@@ -185,7 +193,7 @@ namespace deepdraw
         contact.transfer(contact_snapshot,
                          parents,
                          old_area,
-                         nodal_surface_area(triangulation),
+                         blank::nodal_surface_area(triangulation),
                          extended[0],
                          extended[1]);
         state.contact = contact.committed_history();

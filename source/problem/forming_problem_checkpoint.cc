@@ -1,5 +1,5 @@
-// Checkpoint and restart of FormingProblem (doc/user_guide.md §6, D55):
-// the committed SimulationState, the parameter listing and the output
+// state::Checkpoint and restart of FormingProblem (doc/user_guide.md §6, D55):
+// the committed state::SimulationState, the parameter listing and the output
 // progress; a resumed run continues the same arithmetic from there.
 #include <deepdraw/fe/selective_reduced_quadrature.h>
 #include <deepdraw/io/input_error.h>
@@ -13,16 +13,16 @@ namespace deepdraw
     void
     FormingProblem::save_checkpoint() const
     {
-      const std::string &directory = output_parameters.output_directory;
-      OutputProgress     output;
+      const std::string    &directory = output_parameters.output_directory;
+      state::OutputProgress output;
       output.output_step = output_step;
       if (pvd)
         output.pvd_entries = pvd->steps();
       output.table_sizes = committed_table_sizes;
-      write_checkpoint(checkpoint_file(directory),
-                       parameter_listing,
-                       state,
-                       output);
+      state::write_checkpoint(state::checkpoint_file(directory),
+                              parameter_listing,
+                              state,
+                              output);
     }
 
 
@@ -46,11 +46,12 @@ namespace deepdraw
     FormingProblem::restore_checkpoint()
     {
       const std::string &directory  = output_parameters.output_directory;
-      const std::string  filename   = checkpoint_file(directory);
-      Checkpoint         checkpoint = read_checkpoint(filename);
+      const std::string  filename   = state::checkpoint_file(directory);
+      state::Checkpoint  checkpoint = state::read_checkpoint(filename);
 
       const std::vector<std::string> changes
-        = changed_model_parameters(checkpoint.parameters, parameter_listing);
+        = state::changed_model_parameters(checkpoint.parameters,
+                                          parameter_listing);
       if (!changes.empty())
       {
         std::ostringstream message;
@@ -58,13 +59,14 @@ namespace deepdraw
                 << " was written for another model; changed parameters:";
         for (const std::string &change : changes)
           message << "\n  " << change;
-        message << "\n(only the subsections Output and Checkpoint and the "
-                   "stopping parameters Process/Final load, Load stepping/"
-                   "Minimum increment and Load stepping/Maximum cut-backs "
-                   "may change on a resume)";
+        message
+          << "\n(only the subsections Output and state::Checkpoint and the "
+             "stopping parameters Process/Final load, Load stepping/"
+             "Minimum increment and Load stepping/Maximum cut-backs "
+             "may change on a resume)";
         throw InputError(message.str());
       }
-      SimulationState &saved = checkpoint.state;
+      state::SimulationState &saved = checkpoint.state;
       // The mesh is rebuilt from the prm; an adaptive run's refinements
       // are replayed on it (D84).
       if (!saved.refinements.empty())
@@ -89,7 +91,7 @@ namespace deepdraw
       if (contact.active())
         contact.restore(saved.contact);
 
-      truncate_tables(directory, checkpoint.output.table_sizes);
+      state::truncate_tables(directory, checkpoint.output.table_sizes);
       state = std::move(saved);
       // The configuration x_t of the checkpoint (updated Lagrangian).
       for (const auto &cell : triangulation.active_cell_iterators())

@@ -1,9 +1,9 @@
 // Input checks of FormingProblem that need several subsections at once
 // (doc/user_guide.md §5.2, decisions D50 and D53); each subsection checks
 // its own entries when it is parsed.
+#include <deepdraw/blank/memory_estimate.h>
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/problem/forming_problem.h>
-#include <deepdraw/problem/memory_estimate.h>
 #include <iomanip>
 #include <sstream>
 
@@ -28,10 +28,11 @@ namespace deepdraw
       // is named now, not found later as "residual is not a number".
       const std::vector<double> loads = process_parameters.check_loads();
       prescribed.check_values(geometry, loads);
-      contact.check_values(loads,
-                           geometry.diagonal(),
-                           PrescribedDisplacements::max_relative_displacement
-                             * geometry.largest_extent());
+      contact.check_values(
+        loads,
+        geometry.diagonal(),
+        process::PrescribedDisplacements::max_relative_displacement
+          * geometry.largest_extent());
 
       const double       final_load = process_parameters.final_load;
       std::ostringstream text;
@@ -58,8 +59,9 @@ namespace deepdraw
       }
 
       // The mesh is made only if it fits into the memory (D53).
-      check_memory(geometry,
-                   contact.active() ? contact.tool_definitions().size() : 0);
+      blank::check_memory(geometry,
+                          contact.active() ? contact.tool_definitions().size()
+                                           : 0);
     }
   } // namespace problem
 } // namespace deepdraw

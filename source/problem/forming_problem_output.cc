@@ -3,12 +3,12 @@
 #include <cctype>
 #include <cmath>
 #include <deal.II/numerics/data_out.h>
+#include <deepdraw/blank/nodal_surface_area.h>
 #include <deepdraw/fe/selective_reduced_quadrature.h>
 #include <deepdraw/geometry/tool_vtu.h>
 #include <deepdraw/io/output_error.h>
 #include <deepdraw/io/output_file.h>
 #include <deepdraw/problem/forming_problem.h>
-#include <deepdraw/problem/nodal_surface_area.h>
 #include <filesystem>
 #include <iomanip>
 #include <sstream>
@@ -22,7 +22,7 @@ namespace deepdraw
     {
       // Thickness measured as a real distance (doc/theory.md §6): at every
       // vertex's initial (X, Y), (x_top - x_bottom) . n with n the mean
-      // sheet normal there (SheetThickness).
+      // sheet normal there (blank::SheetThickness).
       const auto &vertices = triangulation.get_vertices();
       sheet_thickness->update(vertices);
       vertex_thickness.assign(vertices.size(), geometry.thickness);
@@ -163,13 +163,13 @@ namespace deepdraw
       std::vector<std::string> columns = {"load"};
       for (const unsigned int face : reaction_faces)
         for (const char *component : {"_Fx", "_Fy", "_Fz"})
-          columns.push_back(face_names[face] + component);
+          columns.push_back(blank::face_names[face] + component);
       reactions_file.open(directory + "/reactions.csv", columns, resume);
       if (contact.active())
       {
         // Force of each tool on the sheet (N) and its translation (mm).
         std::vector<std::string> tool_columns = {"load"};
-        for (const ToolDefinition &tool : contact.tool_definitions())
+        for (const contact::ToolDefinition &tool : contact.tool_definitions())
           for (const char *suffix : {"_Fx", "_Fy", "_Fz", "_ux", "_uy", "_uz"})
             tool_columns.push_back(tool.name + suffix);
         tools_file.open(directory + "/tools.csv", tool_columns, resume);
@@ -180,7 +180,7 @@ namespace deepdraw
           std::vector<std::string> labels;
           for (const double travel : profile_travels)
             labels.push_back(io::OutputParameters::travel_label(travel));
-          EaringProfile::write_plot_script(directory, labels);
+          postprocess::EaringProfile::write_plot_script(directory, labels);
         }
       }
       if (adaptivity_parameters.enabled)
@@ -332,9 +332,10 @@ namespace deepdraw
         Vector<double>(scalar_dof_handler.n_dofs()));
       if (contact.active())
       {
-        const std::vector<ContactCoupling::NodalContact> nodal
+        const std::vector<contact::ContactCoupling::NodalContact> nodal
           = contact.nodal_contact(triangulation.n_vertices());
-        const std::vector<double> area = nodal_surface_area(triangulation);
+        const std::vector<double> area
+          = blank::nodal_surface_area(triangulation);
         for (const auto &cell : scalar_dof_handler.active_cell_iterators())
           for (const unsigned int v : cell->vertex_indices())
           {

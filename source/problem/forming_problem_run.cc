@@ -7,7 +7,7 @@
 #include <deal.II/base/timer.h>
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/problem/forming_problem.h>
-#include <deepdraw/problem/stop_request.h>
+#include <deepdraw/state/stop_request.h>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -105,7 +105,7 @@ namespace deepdraw
       if (!options.resume)
         write_vtu(0.);
       committed_table_sizes
-        = csv_table_sizes(output_parameters.output_directory);
+        = state::csv_table_sizes(output_parameters.output_directory);
     }
 
 
@@ -140,8 +140,8 @@ namespace deepdraw
       Timer  increment_timer;
       while (!control.finished())
       {
-        if (const int signal_number = requested_stop_signal())
-          stop_cleanly("stopped by " + signal_name(signal_number));
+        if (const int signal_number = state::requested_stop_signal())
+          stop_cleanly("stopped by " + state::signal_name(signal_number));
 
         const double     old_load   = control.current_load();
         const double     new_load   = old_load + control.next_increment();
@@ -213,7 +213,7 @@ namespace deepdraw
                     << refinement_history.back().iterations << " iteration(s)"
                     << std::endl;
         committed_table_sizes
-          = csv_table_sizes(output_parameters.output_directory);
+          = state::csv_table_sizes(output_parameters.output_directory);
         if (checkpoint_parameters.interval > 0
             && state.increment_number % checkpoint_parameters.interval == 0)
           save_checkpoint();

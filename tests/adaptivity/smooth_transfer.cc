@@ -30,12 +30,12 @@
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/tria.h>
+#include <deepdraw/adaptivity/history_interpolation.h>
+#include <deepdraw/adaptivity/refinement_indicator.h>
+#include <deepdraw/adaptivity/state_transfer.h>
+#include <deepdraw/adaptivity/vertex_placement.h>
 #include <deepdraw/fe/selective_reduced_quadrature.h>
 #include <deepdraw/material/hill_plasticity.h>
-#include <deepdraw/problem/history_interpolation.h>
-#include <deepdraw/problem/refinement_indicator.h>
-#include <deepdraw/problem/state_transfer.h>
-#include <deepdraw/problem/vertex_placement.h>
 
 using namespace dealii;
 using namespace deepdraw;
@@ -92,19 +92,19 @@ namespace
   // their Q1 initial position (edges of the bent lines inside the block,
   // and at its ends s = 0, 18 mm), the largest radial error, |x - X - u|.
   PlacementErrors
-  refine_bent(const problem::VertexPlacement placement)
+  refine_bent(const adaptivity::VertexPlacement placement)
   {
     Block                       block;
     const std::vector<Point<3>> blank = set_up_bent(block);
     const unsigned int          n_old = block.triangulation.n_vertices();
     for (const auto &cell : block.triangulation.active_cell_iterators())
       cell->set_refine_flag(RefinementCase<3>::cut_xy);
-    problem::TransferOptions options;
+    adaptivity::TransferOptions options;
     options.vertex_placement = placement;
-    problem::refine_and_transfer(block.triangulation,
-                                 block.dof_handler,
-                                 block.state,
-                                 options);
+    adaptivity::refine_and_transfer(block.triangulation,
+                                    block.dof_handler,
+                                    block.state,
+                                    options);
     PlacementErrors   errors;
     std::vector<bool> seen(block.triangulation.n_vertices(), false);
     for (const auto &cell : block.dof_handler.active_cell_iterators())
@@ -170,15 +170,15 @@ namespace
   {
     Block block;
     set_up_bent(block, 3);
-    problem::TransferOptions options;
-    options.vertex_placement = problem::VertexPlacement::smooth;
+    adaptivity::TransferOptions options;
+    options.vertex_placement = adaptivity::VertexPlacement::smooth;
     for (const auto &cell : block.triangulation.active_cell_iterators())
       if (cell->center()[1] > L && cell->center()[1] < 2 * L)
         cell->set_refine_flag(RefinementCase<3>::cut_xy);
-    problem::refine_and_transfer(block.triangulation,
-                                 block.dof_handler,
-                                 block.state,
-                                 options);
+    adaptivity::refine_and_transfer(block.triangulation,
+                                    block.dof_handler,
+                                    block.state,
+                                    options);
     const double sagitta = (R + thickness) * (1. - std::cos(L / (2. * R)));
     deepdraw_test::check_close("hanging vertices stay on the chord (mm)",
                                row_error(block, L),
@@ -195,10 +195,10 @@ namespace
     for (const auto &cell : block.triangulation.active_cell_iterators())
       if (cell->level() == 0)
         cell->set_refine_flag(RefinementCase<3>::cut_xy);
-    problem::refine_and_transfer(block.triangulation,
-                                 block.dof_handler,
-                                 block.state,
-                                 options);
+    adaptivity::refine_and_transfer(block.triangulation,
+                                    block.dof_handler,
+                                    block.state,
+                                    options);
     deepdraw_test::check_true("freed hanging vertices on the cylinder ("
                                 + std::to_string(row_error(block, L)) + " mm)",
                               row_error(block, L)
@@ -222,9 +222,10 @@ namespace
       if (cell->center()[0] > 3. && cell->center()[0] < 6.
           && cell->center()[2] < 0.4)
         marked = cell->active_cell_index();
-    indicator[marked]                = 0.5;
-    const std::vector<double> column = problem::column_maximum(mesh, indicator);
-    bool                      ok     = true;
+    indicator[marked] = 0.5;
+    const std::vector<double> column
+      = adaptivity::column_maximum(mesh, indicator);
+    bool ok = true;
     for (const auto &cell : mesh.active_cell_iterators())
     {
       const bool in_column = cell->center()[0] > 3. && cell->center()[0] < 6.;
@@ -276,11 +277,11 @@ namespace
     const Point<3> centre(0.5, 0.5, 0.5);
     deepdraw_test::check_close(
       "placement_rotation of a rigid motion",
-      (problem::placement_rotation(parent, rigid, centre) - Q).norm(),
+      (adaptivity::placement_rotation(parent, rigid, centre) - Q).norm(),
       0.,
       1e-14);
     const Tensor<2, 3> turn
-      = problem::placement_rotation(q1_child, arc_child, centre);
+      = adaptivity::placement_rotation(q1_child, arc_child, centre);
     // Rotation about y by angle a: turn[0][2] = sin a.
     deepdraw_test::check_close("child turned by L / (8 R) (rad)",
                                -std::asin(turn[0][2]),
@@ -321,13 +322,13 @@ namespace
     const fe::QuadraturePointHistory reference = point;
 
     block.triangulation.set_all_refine_flags();
-    problem::TransferOptions options;
-    options.history  = problem::HistoryTransfer::interpolated;
+    adaptivity::TransferOptions options;
+    options.history  = adaptivity::HistoryTransfer::interpolated;
     options.material = &material;
-    problem::refine_and_transfer(block.triangulation,
-                                 block.dof_handler,
-                                 state,
-                                 options);
+    adaptivity::refine_and_transfer(block.triangulation,
+                                    block.dof_handler,
+                                    state,
+                                    options);
     double       constant = 0., linear = 0., orthogonality = 0.;
     unsigned int q_global = 0;
     for (const auto &cell : block.triangulation.active_cell_iterators())
@@ -380,19 +381,19 @@ namespace
             SymmetricTensor<2, 3>({1., 0., 0., 0., 0., 0.}));
       parent[q].state.equivalent_plastic_strain = 0.02;
     }
-    const auto outer = problem::interpolate_history(parent.data(),
-                                                    quadrature,
-                                                    Point<3>(1., 0.5, 0.5),
-                                                    material);
+    const auto outer = adaptivity::interpolate_history(parent.data(),
+                                                       quadrature,
+                                                       Point<3>(1., 0.5, 0.5),
+                                                       material);
     deepdraw_test::check_close(
       "extrapolated stress returned to the yield surface (MPa)",
       material.equivalent_stress(outer.state.stress),
       Y,
       1e-12); // measured 3e-14: an ulp or two of 176 MPa
-    const auto inner = problem::interpolate_history(parent.data(),
-                                                    quadrature,
-                                                    Point<3>(0., 0.5, 0.5),
-                                                    material);
+    const auto inner = adaptivity::interpolate_history(parent.data(),
+                                                       quadrature,
+                                                       Point<3>(0., 0.5, 0.5),
+                                                       material);
     deepdraw_test::check_true("a stress inside the surface is kept",
                               material.equivalent_stress(inner.state.stress)
                                 < Y);
@@ -404,8 +405,10 @@ main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
 
-  const PlacementErrors linear = refine_bent(problem::VertexPlacement::linear);
-  const PlacementErrors smooth = refine_bent(problem::VertexPlacement::smooth);
+  const PlacementErrors linear
+    = refine_bent(adaptivity::VertexPlacement::linear);
+  const PlacementErrors smooth
+    = refine_bent(adaptivity::VertexPlacement::smooth);
   std::cout << "  linear placement: interior " << linear.interior << ", end "
             << linear.end << ", radial " << linear.radial << " mm" << std::endl;
   std::cout << "  smooth placement: interior " << smooth.interior << ", end "

@@ -1,4 +1,4 @@
-// problem::refine_and_transfer (doc/theory.md §8, D57) on a 2 x 1 x 1 block
+// adaptivity::refine_and_transfer (doc/theory.md §8, D57) on a 2 x 1 x 1 block
 // of Q1 hexahedra carrying a homogeneous state (stress, back stress, epbar,
 // rotated material axes) plus a linear field of epbar, and the linear
 // displacement u = A X + b:
@@ -22,8 +22,8 @@
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/tria.h>
+#include <deepdraw/adaptivity/state_transfer.h>
 #include <deepdraw/fe/selective_reduced_quadrature.h>
-#include <deepdraw/problem/state_transfer.h>
 
 using namespace dealii;
 using namespace deepdraw;
@@ -174,9 +174,9 @@ main(int argc, char *argv[])
 
   set_linear_field(block);
   block.triangulation.set_all_refine_flags();
-  problem::refine_and_transfer(block.triangulation,
-                               block.dof_handler,
-                               block.state);
+  adaptivity::refine_and_transfer(block.triangulation,
+                                  block.dof_handler,
+                                  block.state);
   check(block, "global refinement", 3.);
   bool children_zero = true;
   for (const auto &cell : block.state.enhanced_parameters)
@@ -189,9 +189,9 @@ main(int argc, char *argv[])
   // One cell refined: hanging nodes on its faces.
   set_linear_field(block);
   block.triangulation.begin_active()->set_refine_flag();
-  problem::refine_and_transfer(block.triangulation,
-                               block.dof_handler,
-                               block.state);
+  adaptivity::refine_and_transfer(block.triangulation,
+                                  block.dof_handler,
+                                  block.state);
   check(block, "local refinement", 1.5);
   unsigned int kept = 0;
   for (const auto &cell : block.state.enhanced_parameters)
@@ -221,9 +221,9 @@ main(int argc, char *argv[])
       break;
     }
   }
-  problem::refine_and_transfer(block.triangulation,
-                               block.dof_handler,
-                               block.state);
+  adaptivity::refine_and_transfer(block.triangulation,
+                                  block.dof_handler,
+                                  block.state);
   deepdraw_test::check_true(
     "cut_z: one cell more (" + std::to_string(n_before) + " -> "
       + std::to_string(block.triangulation.n_active_cells()) + ")",

@@ -1,4 +1,4 @@
-// problem::tool_curvature_indicator (D94) on the flat quarter blank of the
+// adaptivity::tool_curvature_indicator (D94) on the flat quarter blank of the
 // square cup (75 x 75 x 0.81 mm, 25 x 25 x 2 cells of 3 mm) under the
 // shipped tools at their initial placement (punch profile radius 8 mm on
 // the top face, die shoulder radius 8 mm below, flat holder), against the
@@ -21,8 +21,8 @@
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/grid/grid_generator.h>
+#include <deepdraw/adaptivity/refinement_indicator.h>
 #include <deepdraw/geometry/square_cup_tools.h>
-#include <deepdraw/problem/refinement_indicator.h>
 
 using namespace dealii;
 using namespace deepdraw;
@@ -45,7 +45,7 @@ main(int argc, char *argv[])
     = geometry::build_square_cup_tools(parameters, thickness);
   // punch, die, blank holder: top, bottom, top.
   const std::vector<double> ratio
-    = problem::tool_curvature_indicator(mesh, tools, {5, 4, 5}, thickness);
+    = adaptivity::tool_curvature_indicator(mesh, tools, {5, 4, 5}, thickness);
 
   unsigned int punch_cells = 0, die_cells = 0, flat_cells = 0;
   for (const auto &cell : mesh.active_cell_iterators())

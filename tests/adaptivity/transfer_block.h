@@ -7,16 +7,16 @@
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/grid/tria.h>
-#include <deepdraw/problem/simulation_state.h>
+#include <deepdraw/state/simulation_state.h>
 
 namespace deepdraw_test
 {
   struct TransferBlock
   {
-    dealii::Triangulation<3>           triangulation;
-    dealii::FESystem<3>                fe{dealii::FE_Q<3>(1), 3};
-    dealii::DoFHandler<3>              dof_handler{triangulation};
-    deepdraw::problem::SimulationState state;
+    dealii::Triangulation<3>         triangulation;
+    dealii::FESystem<3>              fe{dealii::FE_Q<3>(1), 3};
+    dealii::DoFHandler<3>            dof_handler{triangulation};
+    deepdraw::state::SimulationState state;
 
     // Distributes the dofs and sets state.total_displacement at every
     // vertex to displacement(x, vertex index) (a Tensor<1, 3>).

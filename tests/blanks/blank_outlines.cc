@@ -17,14 +17,14 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria.h>
-#include <deepdraw/problem/blank_geometry.h>
-#include <deepdraw/problem/blank_outline.h>
+#include <deepdraw/blank/blank_geometry.h>
+#include <deepdraw/blank/blank_outline.h>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
 using namespace dealii;
-using namespace deepdraw::problem;
+using namespace deepdraw::blank;
 using namespace deepdraw_test;
 
 namespace

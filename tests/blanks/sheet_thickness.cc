@@ -1,4 +1,4 @@
-// problem::SheetThickness on meshes that are not the structured rectangle
+// blank::SheetThickness on meshes that are not the structured rectangle
 // (doc/theory.md §6, D72). Under an affine map x = F X + b of a flat sheet
 // of thickness t0 the top and bottom stay parallel planes at the distance
 // t0 / |F^-T e_z| and the surface points map as points: the measurement is
@@ -15,14 +15,14 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria.h>
-#include <deepdraw/problem/blank_geometry.h>
-#include <deepdraw/problem/sheet_thickness.h>
+#include <deepdraw/blank/blank_geometry.h>
+#include <deepdraw/blank/sheet_thickness.h>
 #include <random>
 #include <string>
 #include <vector>
 
 using namespace dealii;
-using namespace deepdraw::problem;
+using namespace deepdraw::blank;
 using namespace deepdraw_test;
 
 namespace

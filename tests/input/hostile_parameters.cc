@@ -1,7 +1,7 @@
 // Hostile input, class "numeric parameters" (doc/user_guide.md §5.2): every
 // numeric entry of every subsection is given nan, inf, -1, 0 and 1e300 on top
 // of a coarse square cup, and run through deepdraw's own program function
-// (problem::run_command_line, what source/main.cc calls), in this process so
+// (app::run_command_line, what source/main.cc calls), in this process so
 // that the ~300 cases take seconds. A rejected value must give exit code 2,
 // a message naming the entry, and no output directory; an allowed one must
 // pass `--check`. The table must list every Double and Integer entry that
@@ -17,7 +17,7 @@
 #undef BOOST_BIND_GLOBAL_PLACEHOLDERS
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
-#include <deepdraw/problem/command_line.h>
+#include <deepdraw/app/command_line.h>
 #include <deepdraw/problem/forming_problem.h>
 #include <filesystem>
 #include <fstream>
@@ -189,7 +189,7 @@ namespace
     int                code      = -1;
     try
     {
-      code = deepdraw::problem::run_command_line(arguments);
+      code = deepdraw::app::run_command_line(arguments);
     }
     catch (...)
     {

@@ -1,4 +1,4 @@
-// problem::SimulationState, the committed state of a run (doc/architecture.md):
+// state::SimulationState, the committed state of a run (doc/architecture.md):
 // after three plastic bending increments with incompatible modes (non-zero
 // stresses, back stresses, plastic strains, rotated material axes, enhanced
 // parameters and a moved mesh), write() and read() reproduce every field
@@ -66,10 +66,10 @@ main(int argc, char *argv[])
   // This model has no tools: the contact history is given values here so
   // that its serialisation is checked too (the contact runs are checked end
   // to end by kill_and_resume_test.py).
-  problem::SimulationState state = forming_problem->get_state();
-  state.contact.pair_open        = {1, 0, 1};
-  state.contact.pair_status      = {0, 2, 3};
-  state.contact.tool_position    = {0.5, -1.25};
+  state::SimulationState state = forming_problem->get_state();
+  state.contact.pair_open      = {1, 0, 1};
+  state.contact.pair_status    = {0, 2, 3};
+  state.contact.tool_position  = {0.5, -1.25};
   // And the refinement cycles of an adaptive run (D84).
   state.refinements = {{{0, 3, 7}, {1, 12, 4}}, {}, {{2, 5, 3}}};
 
@@ -98,9 +98,9 @@ main(int argc, char *argv[])
 
   std::stringstream stream;
   state.write(stream);
-  const std::string        image = stream.str();
-  problem::SimulationState copy;
-  std::istringstream       input(image);
+  const std::string      image = stream.str();
+  state::SimulationState copy;
+  std::istringstream     input(image);
   copy.read(input);
 
   bool vertices_same = copy.vertices.size() == state.vertices.size();
@@ -157,8 +157,8 @@ main(int argc, char *argv[])
   for (const std::size_t length :
        {std::size_t(0), std::size_t(10), image.size() / 2, image.size() - 1})
   {
-    std::istringstream       cut(image.substr(0, length));
-    problem::SimulationState target;
+    std::istringstream     cut(image.substr(0, length));
+    state::SimulationState target;
     try
     {
       target.read(cut);
@@ -170,9 +170,9 @@ main(int argc, char *argv[])
   }
   deepdraw_test::check_true("a stream cut short is rejected",
                             truncated_rejected);
-  std::istringstream       foreign("this is not a state, only text......");
-  problem::SimulationState target;
-  bool                     foreign_rejected = false;
+  std::istringstream     foreign("this is not a state, only text......");
+  state::SimulationState target;
+  bool                   foreign_rejected = false;
   try
   {
     target.read(foreign);

@@ -21,6 +21,10 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
+#include <deepdraw/adaptivity/adaptivity_parameters.h>
+#include <deepdraw/blank/blank_geometry.h>
+#include <deepdraw/blank/sheet_thickness.h>
+#include <deepdraw/contact/contact_coupling.h>
 #include <deepdraw/fe/cell_geometry.h>
 #include <deepdraw/fe/element_technology.h>
 #include <deepdraw/fe/hexahedron_element.h>
@@ -32,20 +36,16 @@
 #include <deepdraw/io/pvd_record.h>
 #include <deepdraw/material/hill_plasticity.h>
 #include <deepdraw/material/material_parameters.h>
-#include <deepdraw/problem/adaptivity_parameters.h>
-#include <deepdraw/problem/blank_geometry.h>
-#include <deepdraw/problem/checkpoint.h>
-#include <deepdraw/problem/contact_coupling.h>
-#include <deepdraw/problem/earing_profile.h>
-#include <deepdraw/problem/prescribed_displacements.h>
-#include <deepdraw/problem/process_parameters.h>
-#include <deepdraw/problem/process_tables.h>
-#include <deepdraw/problem/sheet_thickness.h>
-#include <deepdraw/problem/simulation_state.h>
+#include <deepdraw/postprocess/earing_profile.h>
+#include <deepdraw/postprocess/process_tables.h>
+#include <deepdraw/process/prescribed_displacements.h>
+#include <deepdraw/process/process_parameters.h>
 #include <deepdraw/solver/increment_control.h>
 #include <deepdraw/solver/linear_solver.h>
 #include <deepdraw/solver/newton_increment.h>
 #include <deepdraw/solver/newton_parameters.h>
+#include <deepdraw/state/checkpoint.h>
+#include <deepdraw/state/simulation_state.h>
 #include <memory>
 #include <string>
 #include <vector>
@@ -132,7 +132,7 @@ namespace deepdraw
       const std::vector<QuadraturePointHistory> &
       get_history() const;
       // The committed state (what a restart or a mesh change carries).
-      const SimulationState &
+      const state::SimulationState &
       get_state() const;
       // Sum of the internal forces over the dofs of a face (reaction).
       Tensor<1, 3>
@@ -149,12 +149,12 @@ namespace deepdraw
       double
       sheet_volume() const;
       // Current thickness at the initial in-plane position (X, Y) of every
-      // vertex (SheetThickness, doc/theory.md §6).
+      // vertex (blank::SheetThickness, doc/theory.md §6).
       const std::vector<double> &
       get_vertex_thickness() const;
       // The thickness measurement of the sheet (its vertex normals of the
       // current configuration).
-      const SheetThickness &
+      const blank::SheetThickness &
       get_sheet_thickness() const;
 
       // Newton history of the last increment: relative force residuals.
@@ -162,7 +162,7 @@ namespace deepdraw
       last_residuals() const;
 
       // Contact with the tools (inactive if no tool is declared).
-      const ContactCoupling &
+      const contact::ContactCoupling &
       get_contact() const;
       // Number of displacement unknowns (they come first in the system).
       types::global_dof_index
@@ -227,8 +227,8 @@ namespace deepdraw
       // refinement).
       void
       setup_dofs();
-      // SheetThickness on the current mesh, every vertex located on it, and
-      // the profile and rim points (end of setup_dofs).
+      // blank::SheetThickness on the current mesh, every vertex located on it,
+      // and the profile and rim points (end of setup_dofs).
       void
       set_up_thickness_measurement();
       void
@@ -326,7 +326,8 @@ namespace deepdraw
       print_increment_line(const IncrementRecord &record,
                            double                 elapsed,
                            double                 remaining) const;
-      // Checkpoint of the committed state (forming_problem_checkpoint.cc).
+      // state::Checkpoint of the committed state
+      // (forming_problem_checkpoint.cc).
       void
       save_checkpoint() const;
       // Restores the checkpoint of the output directory; cuts the CSV
@@ -356,19 +357,19 @@ namespace deepdraw
       Timer wall_timer;
 
       // Parameters
-      BlankGeometry                      geometry;
-      ProcessParameters                  process_parameters;
+      blank::BlankGeometry               geometry;
+      process::ProcessParameters         process_parameters;
       material::MaterialParameters       material_parameters;
-      PrescribedDisplacements            prescribed;
+      process::PrescribedDisplacements   prescribed;
       solver::IncrementControlParameters increment_parameters;
       solver::NewtonParameters           newton_parameters;
       solver::LinearSolverParameters     linear_solver_parameters;
       io::OutputParameters               output_parameters;
       geometry::SquareCupToolParameters  square_cup_tool_parameters;
-      ContactCoupling                    contact;
+      contact::ContactCoupling           contact;
       fe::ElementParameters              element_parameters;
-      CheckpointParameters               checkpoint_parameters;
-      AdaptivityParameters               adaptivity_parameters;
+      state::CheckpointParameters        checkpoint_parameters;
+      adaptivity::AdaptivityParameters   adaptivity_parameters;
       // All parameters, flattened (a checkpoint refuses another model).
       std::string parameter_listing;
 
@@ -400,25 +401,25 @@ namespace deepdraw
       std::vector<fe::VertexParents> blank_vertex_parents;
       // Thickness of the sheet at reference points, and where each
       // vertex's initial (X, Y) lies on its surfaces.
-      std::unique_ptr<SheetThickness>       sheet_thickness;
-      std::vector<SheetThickness::Location> vertex_locations;
+      std::unique_ptr<blank::SheetThickness>       sheet_thickness;
+      std::vector<blank::SheetThickness::Location> vertex_locations;
       // The OX, OY, OD profiles: name, initial distance s0 from the origin
       // and location of each point (doc/user_guide.md §3.1).
       struct ThicknessProfile
       {
-        std::string                                              name;
-        std::vector<std::pair<double, SheetThickness::Location>> points;
+        std::string                                                     name;
+        std::vector<std::pair<double, blank::SheetThickness::Location>> points;
       };
       std::vector<ThicknessProfile> thickness_profiles;
       // Rim of the blank for earing_<travel>mm.csv.
-      EaringProfile earing;
+      postprocess::EaringProfile earing;
 
       // Constrained dofs with their prescribed displacement entry.
-      std::vector<
-        std::pair<types::global_dof_index, const PrescribedDisplacement *>>
+      std::vector<std::pair<types::global_dof_index,
+                            const process::PrescribedDisplacement *>>
         prescribed_dofs;
       // Contact-force components along prescribed displacement components
-      // (held at zero, see ContactCoupling::multiplier_blocks).
+      // (held at zero, see contact::ContactCoupling::multiplier_blocks).
       std::vector<types::global_dof_index> constrained_multipliers;
       // Hanging vertices of a refined mesh (closed; empty on the blank's
       // mesh), part of both constraint sets below.
@@ -439,7 +440,7 @@ namespace deepdraw
 
       // What a restart or a mesh change must carry: committed history,
       // enhanced parameters, displacement, last Newton unknowns, load.
-      SimulationState state;
+      state::SimulationState state;
       // Trial values of the increment being solved (restored from state on
       // a cut-back).
       std::vector<QuadraturePointHistory> trial_history;
@@ -487,8 +488,8 @@ namespace deepdraw
 
       // punch_force.csv, draw_in.csv (runs with tools), and the travels
       // of the thickness profiles within the run.
-      ProcessTables       process_tables;
-      std::vector<double> profile_travels;
+      postprocess::ProcessTables process_tables;
+      std::vector<double>        profile_travels;
     };
   } // namespace problem
 } // namespace deepdraw

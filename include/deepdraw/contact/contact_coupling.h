@@ -1,0 +1,329 @@
+// Frictional contact of the sheet with rigid tools in the monolithic
+// (u, lambda, z) system (doc/theory_contact.md, reference Eqs. 12 and 19).
+//
+// Every surface node of the sheet facing a tool forms a contact pair with
+// it; each pair owns an unknown contact force lambda (3 components, the
+// force of the tool on the node, N). A force-controlled tool adds one
+// unknown, its position z along its axis a, with the equation
+// sum_pairs a . P = F(t). The tools are declared in four slots,
+// subsection Contact / subsection Tool 1 ... Tool 4.
+#ifndef deepdraw_contact_contact_coupling_h
+#define deepdraw_contact_contact_coupling_h
+
+#include <array>
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+#include <deepdraw/contact/alart_curnier_law.h>
+#include <deepdraw/contact/contact_history.h>
+#include <deepdraw/contact/contact_pair.h>
+#include <deepdraw/contact/contact_parameters.h>
+#include <deepdraw/fe/vertex_parents.h>
+#include <deepdraw/geometry/rigid_tool.h>
+#include <deepdraw/geometry/square_cup_tools.h>
+#include <deepdraw/solver/multiplier_condensation.h>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace deepdraw
+{
+  namespace contact
+  {
+    using namespace dealii;
+
+    constexpr unsigned int n_tool_slots = 4;
+
+    struct ToolDefinition
+    {
+      std::string name;
+      // "square cup punch", "square cup die", "square cup blank holder",
+      // "file" or "cad" (then `file`).
+      std::string geometry;
+      std::string file;
+      // Geometry = cad: Length unit and Normals of the slot.
+      std::string length_unit = "file";
+      std::string normals     = "automatic";
+      // Boundary id of the sheet face it touches: 4 bottom, 5 top.
+      unsigned int sheet_face       = 5;
+      bool         force_controlled = false;
+      // Displacement control: translation (3 expressions of t, mm), and
+      // its text for messages.
+      std::shared_ptr<FunctionParser<1>> translation;
+      std::string                        translation_expression;
+      // "Contact/Tool N/", for messages.
+      std::string parameter_prefix;
+      // Force control: axis a (unit) and force F(t) in N along a
+      // (Process/Blank holder force, shared by all force-controlled tools).
+      Tensor<1, 3>                       axis;
+      std::shared_ptr<FunctionParser<1>> force;
+    };
+
+    class ContactCoupling
+    {
+    public:
+      static void
+      declare_parameters(ParameterHandler &prm);
+      // Reads subsection Contact; tool files are relative to
+      // prm_directory. Every force-controlled tool presses with
+      // blank_holder_force (Process/Blank holder force, an expression of
+      // t). Throws InputError naming the parameter or file.
+      void
+      parse_parameters(ParameterHandler  &prm,
+                       const std::string &prm_directory,
+                       const std::string &blank_holder_force);
+
+      bool
+      active() const;
+
+      // Largest force (N) a force-controlled tool may be given (D50).
+      static constexpr double max_force = 1e9;
+
+      // Input checks that need the blank and the run (D50): Search distance
+      // at most blank_diagonal; every translation finite and within
+      // +-length_bound (mm) and every tool force finite and at most
+      // max_force at each of loads (ProcessParameters::check_loads). Throws
+      // InputError naming the parameter, the value and the load.
+      void
+      check_values(const std::vector<double> &loads,
+                   double                     blank_diagonal,
+                   double                     length_bound) const;
+
+      // Builds the tools (square-cup builder tools need the geometry of
+      // subsection Tools and the sheet thickness; a free edge of a CAD
+      // tool in a symmetry plane of the model is a symmetry edge).
+      void
+      create_tools(const geometry::SquareCupToolParameters &square_cup,
+                   double                                   sheet_thickness,
+                   bool                                     symmetry_plane_x,
+                   bool                                     symmetry_plane_y);
+
+      // One pair per (vertex on the tool's sheet face, tool). vertex_dofs
+      // gives the 3 displacement dofs of a vertex; unknowns of the
+      // multipliers and tool positions are numbered from first_index.
+      // Returns the number of unknowns added.
+      unsigned int
+      create_pairs(
+        const std::vector<std::vector<unsigned int>> &face_vertices,
+        const std::vector<std::array<types::global_dof_index, 3>> &vertex_dofs,
+        types::global_dof_index                                    first_index,
+        double youngs_modulus,
+        double element_size);
+
+      void
+      add_sparsity(DynamicSparsityPattern &dsp) const;
+
+      // The unknowns of every pair: its node's displacement dofs and its
+      // multipliers, component by component, and its augmentation (for the
+      // exact elimination of the multipliers, solver::MultiplierCondensation,
+      // D90). A multiplier component whose displacement component is
+      // prescribed (e.g. on a symmetry plane) is redundant with the
+      // constraint, which carries that force, and is constrained to zero by
+      // the caller.
+      std::vector<solver::MultiplierBlock>
+      multiplier_blocks() const;
+
+      // Places the displacement-controlled tools at load t_new and
+      // remembers where every tool was at t_old.
+      void
+      start_increment(double old_load, double new_load);
+
+      // Adds the contact contributions for the current iterate:
+      // `positions` are the vertex positions at t (start of increment),
+      // `solution` holds du (displacement part), lambda and z; the
+      // force-controlled tools are first placed at their z. Adds -r to rhs
+      // (displacement rows P, multiplier rows -F_sup, tool rows
+      // F(new_load) - a.P) and dr/dx to the matrix (if matrix != nullptr)
+      // through the constraints. The contact forces are kept in the pairs
+      // (tool_forces(), nodal_contact()), not returned in a vector.
+      // Returns the number of pairs whose state (open / stick / slip, or
+      // found by the search) changed since the last call.
+      // With predictor = true (the tangent predictor of the increment) the
+      // pairs that were open at the last converged state stay open: the
+      // predictor linearises at that state (reference Eq. 13).
+      unsigned int
+      assemble(const std::vector<Point<3>>     &positions,
+               const Vector<double>            &solution,
+               const AffineConstraints<double> &constraints,
+               SparseMatrix<double>            *matrix,
+               Vector<double>                  &rhs,
+               double                           new_load,
+               bool                             predictor = false);
+
+      // Appends the multiplier unknowns of the pairs open after the last
+      // assemble(): their rows and columns hold only the diagonal 1/r (the
+      // linear solver leaves them out, D60).
+      void
+      add_open_multipliers(
+        std::vector<types::global_dof_index> &unknowns) const;
+
+      // sqrt(sum |r F_sup|^2 + sum (holder residual)^2): a force (N).
+      double
+      residual_norm(const Vector<double> &rhs) const;
+      // Largest |sum a.P - F(t)| / |F(t)| over the force-controlled tools
+      // (0 without them); a tool with F(t) = 0 is measured against
+      // zero_force_scale (N) instead.
+      double
+      tool_force_error(const Vector<double> &rhs,
+                       double                load,
+                       double                zero_force_scale) const;
+
+      // Remembers the converged tool positions and contact states.
+      void
+      commit(const Vector<double> &solution);
+      // What commit() remembered, for the SimulationState, and its
+      // restoration on a restart (same pairs and tools, checked).
+      ContactHistory
+      committed_history() const;
+      void
+      restore(const ContactHistory &history);
+
+      // For output, after assemble(): per vertex (index of the vertex)
+      // accumulated over its pairs.
+      struct NodalContact
+      {
+        unsigned int status       = 0; // 0 open, 1 stick, 2 slip
+        double       normal_force = 0.;
+        Tensor<1, 3> friction_force;
+        double       gap = std::numeric_limits<double>::max();
+      };
+      std::vector<NodalContact>
+      nodal_contact(unsigned int n_vertices) const;
+
+      // Force of each tool on the sheet (sum of P over its pairs), and
+      // translation of each tool.
+      std::vector<Tensor<1, 3>>
+      tool_forces() const;
+      const std::vector<geometry::RigidTool> &
+      tools() const;
+      const std::vector<ToolDefinition> &
+      tool_definitions() const;
+      // Translation of displacement-controlled tool k at load t, and the
+      // force of force-controlled tool k; both throw std::runtime_error
+      // naming the parameter if the value is not finite (exit code 3).
+      Tensor<1, 3>
+      prescribed_translation(unsigned int k, double load) const;
+      double
+      prescribed_force(unsigned int k, double load) const;
+      // Unknowns of the positions of the force-controlled tools.
+      std::vector<types::global_dof_index>
+      tool_position_unknowns() const;
+      // Counts of pairs in stick and slip after the last assemble().
+      unsigned int
+      n_stick() const;
+      unsigned int
+      n_slip() const;
+      // Pairs that were penetrating at the start of the run.
+      unsigned int
+      n_initial_penetrations(const std::vector<Point<3>> &positions) const;
+      double
+      search_time() const;
+
+      // Checks that no tool passed through the sheet (D56,
+      // contact_coupling_checks.cc). At the start: no node more than half
+      // the sheet thickness inside a tool, and every tool's normal towards
+      // the sheet face it acts on; throws InputError naming the tool.
+      void
+      check_initial_placement(const std::vector<Point<3>> &positions,
+                              double sheet_thickness) const;
+      // Before an increment: "" or why a displacement-controlled tool
+      // moves farther than the search distance in [old_load, new_load];
+      // with the converged solution, the same for force-controlled tools.
+      std::string
+      check_tool_motion(double old_load, double new_load) const;
+      std::string
+      check_tool_motion(double                old_load,
+                        double                new_load,
+                        const Vector<double> &solution) const;
+      // After a converged increment (positions at t, du in solution): ""
+      // or which node ended inside which tool.
+      std::string
+      check_tool_sides(const std::vector<Point<3>> &positions,
+                       const Vector<double>        &solution,
+                       double                       sheet_thickness) const;
+
+      // The contact state of every pair, carried over a mesh change
+      // (contact_coupling_transfer.cc, doc/theory.md §8.2): the multipliers
+      // of the last two converged Newton solutions, the committed states,
+      // and the tool positions z of both solutions.
+      struct PairSnapshot
+      {
+        unsigned int                vertex;
+        unsigned int                tool;
+        std::array<Tensor<1, 3>, 2> multiplier;
+        bool                        open_at_start;
+        bool                        found;
+        contact::ContactState       state;
+      };
+      struct Snapshot
+      {
+        std::vector<PairSnapshot>          pairs;
+        std::vector<std::array<double, 2>> tool_position;
+      };
+      Snapshot
+      snapshot(const Vector<double> &converged,
+               const Vector<double> &previous) const;
+      // After create_pairs() on the refined mesh: every pair starts from the
+      // pairs of the same tool at its node's parents (an old node: itself).
+      // The multipliers are nodal forces; their pressures λ/a (a: the
+      // node's share of the sheet face, old_area before and new_area after
+      // the refinement, by vertex) are interpolated and multiplied by the
+      // new share, so that a uniform pressure is carried exactly. A pair is
+      // closed only if all its parents' pairs were (slip if one slipped).
+      // Writes the multipliers and tool positions into the contact blocks
+      // of converged and previous (sized for the new unknowns).
+      void
+      transfer(const Snapshot                       &old,
+               const std::vector<fe::VertexParents> &parents,
+               const std::vector<double>            &old_area,
+               const std::vector<double>            &new_area,
+               Vector<double>                       &converged,
+               Vector<double>                       &previous);
+
+    private:
+      struct Pair
+      {
+        unsigned int                           vertex;
+        unsigned int                           tool;
+        std::array<types::global_dof_index, 3> u_dofs;
+        types::global_dof_index                first_multiplier;
+        double                                 augmentation;
+        contact::ContactPairResult             result;
+        bool                                   found = false;
+        // Open at the last converged state (see assemble(), predictor).
+        bool open_at_start = false;
+      };
+
+      // Projection of the pair's node at `solution` and its contact law
+      // (pair.result); true if its state changed.
+      bool
+      evaluate_pair(Pair                        &pair,
+                    const std::vector<Point<3>> &positions,
+                    const Vector<double>        &solution,
+                    bool                         predictor) const;
+
+      contact::ContactParameters parameters;
+      double                     search_distance = 2.;
+      // Process/Blank holder force, for messages.
+      std::string                      holder_force_expression;
+      std::vector<ToolDefinition>      definitions;
+      std::vector<geometry::RigidTool> tool_list;
+      // Unknown index of the position of each force-controlled tool
+      // (invalid for displacement control).
+      std::vector<types::global_dof_index>      position_dof;
+      std::vector<double>                       position_at_start; // z_n
+      std::vector<Tensor<1, 3>>                 translation_at_start;
+      std::vector<Tensor<1, 3>>                 translation_at_end;
+      std::vector<Pair>                         pairs;
+      std::unique_ptr<contact::AlartCurnierLaw> law;
+      double                                    force_regularisation = 1.;
+      double                                    total_search_time    = 0.;
+    };
+  } // namespace contact
+} // namespace deepdraw
+
+#endif

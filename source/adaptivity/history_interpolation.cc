@@ -1,0 +1,95 @@
+#include <algorithm>
+#include <cmath>
+#include <deepdraw/adaptivity/history_interpolation.h>
+#include <deepdraw/fe/selective_reduced_quadrature.h>
+#include <stdexcept>
+
+namespace deepdraw
+{
+  namespace adaptivity
+  {
+    Tensor<2, 3>
+    nearest_rotation(const Tensor<2, 3> &A)
+    {
+      // Newton's iteration for the polar factor converges quadratically
+      // from a matrix near a rotation (Higham, Functions of Matrices, §8.3).
+      Tensor<2, 3> R = A;
+      for (unsigned int iteration = 0; iteration < 50; ++iteration)
+      {
+        const Tensor<2, 3> next   = 0.5 * (R + transpose(invert(R)));
+        const double       change = (next - R).norm();
+        R                         = next;
+        if (change < 1e-15)
+          break;
+      }
+      return R;
+    }
+
+
+    std::vector<double>
+    trilinear_weights(const Quadrature<3> &quadrature, const Point<3> &xi)
+    {
+      // The two coordinates of the rule per direction (its first 8 points:
+      // the selective reduced rule appends the centre with weight 0).
+      const unsigned int n   = fe::n_weighted_points;
+      double             low = 1., high = 0.;
+      for (unsigned int q = 0; q < n; ++q)
+      {
+        low  = std::min(low, quadrature.point(q)[0]);
+        high = std::max(high, quadrature.point(q)[0]);
+      }
+      std::vector<double> weights(n, 1.);
+      for (unsigned int q = 0; q < n; ++q)
+        for (unsigned int d = 0; d < 3; ++d)
+        {
+          const bool upper = quadrature.point(q)[d] > 0.5 * (low + high);
+          weights[q] *= upper ? (xi[d] - low) / (high - low)
+                              : (high - xi[d]) / (high - low);
+        }
+      return weights;
+    }
+
+
+    fe::QuadraturePointHistory
+    interpolate_history(const fe::QuadraturePointHistory *parent,
+                        const Quadrature<3>              &quadrature,
+                        const Point<3>                   &xi,
+                        const material::HillPlasticity   &material)
+    {
+      const std::vector<double>  w = trilinear_weights(quadrature, xi);
+      fe::QuadraturePointHistory result;
+      result.state.stress                    = 0;
+      result.state.back_stress               = 0;
+      result.state.equivalent_plastic_strain = 0.;
+      Tensor<2, 3> axes;
+      for (unsigned int q = 0; q < w.size(); ++q)
+      {
+        // Stress and back stress in the material frame (σ̂, X̂): the
+        // co-rotated fields, smooth where the sheet bends.
+        result.state.stress += w[q] * parent[q].state.stress;
+        result.state.back_stress += w[q] * parent[q].state.back_stress;
+        result.state.equivalent_plastic_strain
+          += w[q] * parent[q].state.equivalent_plastic_strain;
+        axes += w[q] * parent[q].material_axes;
+      }
+      result.material_axes = nearest_rotation(axes);
+      result.state.equivalent_plastic_strain
+        = std::max(0., result.state.equivalent_plastic_strain);
+
+      // Back onto the yield surface, radially in the deviatoric plane.
+      const SymmetricTensor<2, 3> xi_stress
+        = result.state.stress - result.state.back_stress;
+      const double equivalent = material.equivalent_stress(xi_stress);
+      const double yield
+        = material.yield_stress(result.state.equivalent_plastic_strain);
+      if (equivalent > yield)
+      {
+        const SymmetricTensor<2, 3> deviatoric = deviator(xi_stress);
+        result.state.stress                    = result.state.back_stress
+                              + (xi_stress - deviatoric)
+                              + (yield / equivalent) * deviatoric;
+      }
+      return result;
+    }
+  } // namespace adaptivity
+} // namespace deepdraw

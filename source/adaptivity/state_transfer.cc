@@ -1,0 +1,255 @@
+#include <deal.II/numerics/solution_transfer.h>
+#include <deepdraw/adaptivity/history_interpolation.h>
+#include <deepdraw/adaptivity/state_transfer.h>
+#include <deepdraw/adaptivity/vertex_placement.h>
+#include <deepdraw/fe/selective_reduced_quadrature.h>
+#include <deepdraw/fe/vertex_parents.h>
+#include <map>
+#include <stdexcept>
+
+namespace deepdraw
+{
+  namespace adaptivity
+  {
+    namespace
+    {
+      using CellKey = std::pair<int, int>; // level, index
+
+      template <typename Iterator>
+      CellKey
+      key_of(const Iterator &cell)
+      {
+        return {cell->level(), cell->index()};
+      }
+
+      // The displacement block (first n entries) of a Newton solution.
+      Vector<double>
+      displacement_block(const Vector<double> &solution, const std::size_t n)
+      {
+        Vector<double> block(n);
+        for (std::size_t i = 0; i < std::min<std::size_t>(n, solution.size());
+             ++i)
+          block[i] = solution[i];
+        return block;
+      }
+
+      // Index of the Gauss point of the reference cell nearest to xi.
+      unsigned int
+      nearest_point(const Quadrature<3> &quadrature, const Point<3> &xi)
+      {
+        unsigned int nearest = 0;
+        for (unsigned int q = 1; q < fe::n_weighted_points; ++q)
+          if (xi.distance_square(quadrature.point(q))
+              < xi.distance_square(quadrature.point(nearest)))
+            nearest = q;
+        return nearest;
+      }
+    } // namespace
+
+
+    void
+    refine_and_transfer(Triangulation<3>       &triangulation,
+                        DoFHandler<3>          &dof_handler,
+                        state::SimulationState &state,
+                        const TransferOptions  &options)
+    {
+      if (options.history == HistoryTransfer::interpolated
+          && options.material == nullptr)
+        throw std::invalid_argument("refine_and_transfer: the interpolated "
+                                    "history needs the material");
+      const unsigned int n_points = fe::n_weighted_points;
+      const std::size_t  n_dofs   = dof_handler.n_dofs();
+      if (state.history.size() != triangulation.n_active_cells() * n_points
+          || state.total_displacement.size() != n_dofs)
+        throw std::logic_error("refine_and_transfer: the state does not "
+                               "belong to this mesh");
+      const bool has_enhanced = !state.enhanced_parameters.empty();
+
+      // Where each active cell's data start, by cell (not by active index,
+      // which refinement renumbers).
+      std::map<CellKey, unsigned int> old_index;
+      for (const auto &cell : triangulation.active_cell_iterators())
+      {
+        if (cell->coarsen_flag_set())
+          throw std::logic_error("refine_and_transfer: coarsening is not "
+                                 "supported");
+        old_index[key_of(cell)] = cell->active_cell_index();
+      }
+
+      // For the smooth placement (D87): the mesh lines before refinement
+      // and the old vertices' initial positions x - u, in which those lines
+      // are straight.
+      const bool smooth = options.vertex_placement == VertexPlacement::smooth;
+      const unsigned int n_old_vertices = triangulation.n_vertices();
+      std::vector<std::vector<unsigned int>> lines;
+      std::vector<Point<3>>                  reference;
+      std::vector<fe::VertexParents>         freed_parents;
+      std::vector<bool>                      hung;
+      if (smooth)
+      {
+        lines         = line_neighbours(triangulation);
+        freed_parents = hanging_edge_parents(triangulation);
+        hung          = hanging_vertices(triangulation);
+        reference     = triangulation.get_vertices();
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          for (const unsigned int v : cell->vertex_indices())
+            for (unsigned int c = 0; c < 3; ++c)
+              reference[cell->vertex_index(v)][c]
+                = cell->vertex(v)[c]
+                  - state.total_displacement[cell->vertex_dof_index(v, c)];
+      }
+
+      std::vector<Vector<double>> fields
+        = {state.total_displacement,
+           displacement_block(state.converged_solution, n_dofs),
+           displacement_block(state.previous_converged_solution, n_dofs)};
+      SolutionTransfer<3, Vector<double>> solution_transfer(dof_handler);
+      solution_transfer.prepare_for_pure_refinement();
+      triangulation.execute_coarsening_and_refinement();
+      dof_handler.distribute_dofs(dof_handler.get_fe());
+      for (Vector<double> &field : fields)
+      {
+        Vector<double> refined(dof_handler.n_dofs());
+        solution_transfer.refine_interpolate(field, refined);
+        field = std::move(refined);
+      }
+      state.total_displacement          = fields[0];
+      state.converged_solution          = fields[1];
+      state.previous_converged_solution = fields[2];
+
+      std::vector<Point<3>> q1_vertices;
+      std::vector<bool>     moved;
+      if (smooth)
+      {
+        // New vertices, and old ones that hung on a coarse edge and do not
+        // any more, onto the smooth curves through the old ones; the total
+        // displacement moves with them (D87). Hanging vertices stay on
+        // their coarse edge or face, and so does every vertex of a cell
+        // with a hanging vertex: moving it alone would bend or squash that
+        // cell by the sagitta (measured: a column of the square cup whose
+        // bottom layer was refined and top layer not came out 1.4 % thicker
+        // at once).
+        q1_vertices               = triangulation.get_vertices();
+        std::vector<bool> hanging = hanging_vertices(triangulation);
+        {
+          std::vector<bool> beside = hanging;
+          for (const auto &cell : triangulation.active_cell_iterators())
+          {
+            bool any = false;
+            for (const unsigned int v : cell->vertex_indices())
+              any = any || hanging[cell->vertex_index(v)];
+            if (any)
+              for (const unsigned int v : cell->vertex_indices())
+                beside[cell->vertex_index(v)] = true;
+          }
+          hanging = std::move(beside);
+        }
+        std::vector<fe::VertexParents> parents
+          = fe::vertex_parents(triangulation, n_old_vertices);
+        moved.assign(triangulation.n_vertices(), false);
+        std::vector<bool> hung_all = hung;
+        hung_all.resize(triangulation.n_vertices(), false);
+        for (unsigned int v = 0; v < triangulation.n_vertices(); ++v)
+          if (!hanging[v])
+          {
+            if (v < n_old_vertices && freed_parents[v].size() == 2)
+              parents[v] = freed_parents[v];
+            moved[v] = parents[v].size() >= 2;
+          }
+        const std::vector<Point<3>> positions
+          = smooth_vertex_positions(q1_vertices,
+                                    reference,
+                                    lines,
+                                    parents,
+                                    moved,
+                                    hung_all);
+        std::vector<bool> done(triangulation.n_vertices(), false);
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          for (const unsigned int v : cell->vertex_indices())
+          {
+            const unsigned int index = cell->vertex_index(v);
+            if (!moved[index] || done[index])
+              continue;
+            done[index]               = true;
+            const Tensor<1, 3> offset = positions[index] - cell->vertex(v);
+            for (unsigned int c = 0; c < 3; ++c)
+              state.total_displacement[cell->vertex_dof_index(v, c)]
+                += offset[c];
+            cell->vertex(v) = positions[index];
+          }
+      }
+
+      const Quadrature<3> quadrature = fe::selective_reduced_quadrature();
+      std::vector<fe::QuadraturePointHistory> history(
+        triangulation.n_active_cells() * n_points);
+      std::vector<fe::EnhancedParameters> enhanced(
+        has_enhanced ? triangulation.n_active_cells() : 0);
+      for (const auto &cell : triangulation.active_cell_iterators())
+      {
+        const unsigned int new_cell = cell->active_cell_index();
+        const auto         same     = old_index.find(key_of(cell));
+        if (same != old_index.end())
+        {
+          std::copy_n(state.history.begin() + same->second * n_points,
+                      n_points,
+                      history.begin() + new_cell * n_points);
+          if (has_enhanced)
+            enhanced[new_cell] = state.enhanced_parameters[same->second];
+          continue;
+        }
+        const auto parent = cell->parent();
+        const auto origin = old_index.find(key_of(parent));
+        if (origin == old_index.end())
+          throw std::logic_error("refine_and_transfer: a new cell whose "
+                                 "parent was not active");
+        // The child's points in the parent's unit cell: exact, and
+        // independent of where the new vertices were placed.
+        const unsigned int child = parent->child_iterator_to_index(cell);
+        for (unsigned int q = 0; q < n_points; ++q)
+        {
+          const Point<3> xi = GeometryInfo<3>::child_to_cell_coordinates(
+            quadrature.point(q),
+            child,
+            parent->refinement_case());
+          const fe::QuadraturePointHistory *parent_points
+            = &state.history[origin->second * n_points];
+          history[new_cell * n_points + q]
+            = options.history == HistoryTransfer::interpolated
+                ? interpolate_history(parent_points,
+                                      quadrature,
+                                      xi,
+                                      *options.material)
+                : parent_points[nearest_point(quadrature, xi)];
+        }
+      }
+      // The points of every cell with a moved vertex turn with it from the
+      // Q1 to the smooth placement (D87): the stress stays the same in the
+      // material frame. (Cells whose vertices did not move keep their axes
+      // bit for bit.)
+      if (smooth)
+        for (const auto &cell : triangulation.active_cell_iterators())
+        {
+          std::array<Point<3>, 8> q1_corners, corners;
+          bool                    any_moved = false;
+          for (const unsigned int v : cell->vertex_indices())
+          {
+            q1_corners[v] = q1_vertices[cell->vertex_index(v)];
+            corners[v]    = cell->vertex(v);
+            any_moved     = any_moved || corners[v] != q1_corners[v];
+          }
+          if (!any_moved)
+            continue;
+          for (unsigned int q = 0; q < n_points; ++q)
+          {
+            auto &axes
+              = history[cell->active_cell_index() * n_points + q].material_axes;
+            axes = placement_rotation(q1_corners, corners, quadrature.point(q))
+                   * axes;
+          }
+        }
+      state.history             = std::move(history);
+      state.enhanced_parameters = std::move(enhanced);
+      state.vertices            = triangulation.get_vertices();
+    }
+  } // namespace adaptivity
+} // namespace deepdraw

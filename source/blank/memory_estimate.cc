@@ -1,0 +1,99 @@
+#include <cstdio>
+#include <deepdraw/blank/memory_estimate.h>
+#include <deepdraw/io/input_error.h>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+#include <string>
+
+namespace deepdraw
+{
+  namespace blank
+  {
+    namespace
+    {
+      // Measured (D53): peak resident memory of runs of one increment with
+      // UMFPACK, 2 layers, 12 x 12 to 100 x 100 cells in the plane: the
+      // program itself, per cell (mesh, dofs, history, matrix and factors;
+      // tension bar without tools) and per contact pair (square cup).
+      constexpr double bytes_of_program = 170e6;
+      constexpr double bytes_per_cell   = 48e3;
+      constexpr double bytes_per_pair   = 19e3;
+
+      // A number from a file such as /sys/fs/cgroup/memory.max; negative
+      // if it cannot be read or says "max".
+      double
+      read_number(const std::string &filename)
+      {
+        std::ifstream in(filename);
+        std::string   word;
+        if (!(in >> word) || word == "max")
+          return -1.;
+        try
+        {
+          return std::stod(word);
+        }
+        catch (const std::exception &)
+        {
+          return -1.;
+        }
+      }
+    } // namespace
+
+
+    double
+    estimated_memory(const BlankGeometry &geometry, const unsigned int n_tools)
+    {
+      const double nodes_per_face = geometry.n_plane_vertices();
+      return bytes_of_program + bytes_per_cell * geometry.n_cells()
+             + bytes_per_pair * n_tools * nodes_per_face;
+    }
+
+
+    double
+    available_memory()
+    {
+      double        available = std::numeric_limits<double>::infinity();
+      std::ifstream meminfo("/proc/meminfo");
+      std::string   key;
+      double        kilobytes = 0.;
+      std::string   unit;
+      while (meminfo >> key >> kilobytes >> unit)
+        if (key == "MemAvailable:")
+          available = kilobytes * 1024.;
+      const double limit   = read_number("/sys/fs/cgroup/memory.max");
+      const double current = read_number("/sys/fs/cgroup/memory.current");
+      if (limit >= 0. && current >= 0. && limit - current < available)
+        available = std::max(0., limit - current);
+      return available;
+    }
+
+
+    void
+    check_memory(const BlankGeometry &geometry, const unsigned int n_tools)
+    {
+      const double needed    = estimated_memory(geometry, n_tools);
+      const double available = available_memory();
+      if (needed <= available)
+        return;
+      std::ostringstream text;
+      text << std::setprecision(3) << "Geometry: the mesh of ";
+      if (geometry.outline == BlankGeometry::Outline::rectangle)
+        text << geometry.elements_along_x << " x " << geometry.elements_along_y
+             << " x ";
+      else
+        text << geometry.n_plane_cells() << " x ";
+      text << geometry.layers_through_thickness << " = " << geometry.n_cells()
+           << " cells";
+      if (n_tools > 0)
+        text << " with " << n_tools << " tool(s)";
+      text << " needs about " << needed / 1e9
+           << " GB of memory (estimated from measured runs), more than the "
+           << available / 1e9
+           << " GB available; use fewer Elements along x, Elements along y "
+              "or Layers through thickness";
+      throw InputError(text.str());
+    }
+  } // namespace blank
+} // namespace deepdraw

@@ -1,0 +1,314 @@
+#include <algorithm>
+#include <deepdraw/io/binary_stream.h>
+#include <deepdraw/io/input_error.h>
+#include <deepdraw/state/checkpoint.h>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace deepdraw
+{
+  namespace state
+  {
+    namespace
+    {
+      constexpr char tag[] = "deepdraw-checkpoint-1";
+
+      constexpr char source[] = "the file";
+
+      template <typename T>
+      void
+      put(std::ostream &stream, const T &value)
+      {
+        io::write_value(stream, value);
+      }
+
+      template <typename T>
+      void
+      get(std::istream &stream, T &value)
+      {
+        io::read_value(stream, value, source);
+      }
+
+      void
+      put_string(std::ostream &stream, const std::string &text)
+      {
+        put(stream, text.size());
+        stream.write(text.data(), text.size());
+      }
+
+      std::string
+      get_string(std::istream &stream)
+      {
+        std::size_t n = 0;
+        get(stream, n);
+        if (n > (std::size_t(1) << 32))
+          throw std::runtime_error("a text block is too long");
+        std::string text(n, '\0');
+        io::read_bytes(stream, text.data(), n, source);
+        return text;
+      }
+
+      void
+      write_output_progress(std::ostream &stream, const OutputProgress &output)
+      {
+        put(stream, output.output_step);
+        put(stream, output.pvd_entries.size());
+        for (const io::PvdRecord::Entry &entry : output.pvd_entries)
+        {
+          put(stream, entry.time);
+          put(stream, entry.part);
+          put_string(stream, entry.file);
+        }
+        put(stream, output.table_sizes.size());
+        for (const auto &[name, size] : output.table_sizes)
+        {
+          put_string(stream, name);
+          put(stream, size);
+        }
+      }
+
+      OutputProgress
+      read_output_progress(std::istream &stream)
+      {
+        OutputProgress output;
+        get(stream, output.output_step);
+        std::size_t n = 0;
+        get(stream, n);
+        for (std::size_t i = 0; i < n && stream; ++i)
+        {
+          io::PvdRecord::Entry entry;
+          get(stream, entry.time);
+          get(stream, entry.part);
+          entry.file = get_string(stream);
+          output.pvd_entries.push_back(entry);
+        }
+        get(stream, n);
+        for (std::size_t i = 0; i < n && stream; ++i)
+        {
+          std::string    name = get_string(stream);
+          std::uintmax_t size = 0;
+          get(stream, size);
+          output.table_sizes.emplace_back(name, size);
+        }
+        return output;
+      }
+
+      // "Subsection/Name" -> value, from a flatten_parameters() listing.
+      std::map<std::string, std::string>
+      parse_listing(const std::string &listing)
+      {
+        std::map<std::string, std::string> values;
+        std::istringstream                 lines(listing);
+        std::string                        line;
+        while (std::getline(lines, line))
+        {
+          const auto separator = line.find(" = ");
+          if (separator != std::string::npos)
+            values[line.substr(0, separator)] = line.substr(separator + 3);
+        }
+        return values;
+      }
+
+      // Parameters a resumed run may change (D55).
+      bool
+      may_change_on_resume(const std::string &name)
+      {
+        return name.rfind("Output/", 0) == 0
+               || name.rfind("Checkpoint/", 0) == 0
+               || name == "Process/Final load"
+               || name == "Load stepping/Minimum increment"
+               || name == "Load stepping/Maximum cut-backs";
+      }
+
+      std::string
+      trim(const std::string &text)
+      {
+        const auto first = text.find_first_not_of(" \t");
+        if (first == std::string::npos)
+          return "";
+        const auto last = text.find_last_not_of(" \t");
+        return text.substr(first, last - first + 1);
+      }
+    } // namespace
+
+
+    void
+    CheckpointParameters::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Checkpoint");
+      prm.declare_entry("Interval",
+                        "0",
+                        Patterns::Integer(0),
+                        "Converged increments between checkpoints "
+                        "(checkpoint.bin in the output directory, resumed "
+                        "with --resume); 0 writes one only at a clean stop "
+                        "(SIGINT, SIGTERM, a failed increment).");
+      prm.leave_subsection();
+    }
+
+
+    void
+    CheckpointParameters::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Checkpoint");
+      interval = prm.get_integer("Interval");
+      prm.leave_subsection();
+    }
+
+
+    std::string
+    checkpoint_file(const std::string &output_directory)
+    {
+      return output_directory + "/checkpoint.bin";
+    }
+
+
+    void
+    write_checkpoint(const std::string     &filename,
+                     const std::string     &parameters,
+                     const SimulationState &state,
+                     const OutputProgress  &output)
+    {
+      const std::string temporary = filename + ".tmp";
+      {
+        std::ofstream stream(temporary, std::ios::binary);
+        stream.write(tag, sizeof(tag));
+        put_string(stream, parameters);
+        state.write(stream);
+        write_output_progress(stream, output);
+        stream.flush();
+        if (!stream)
+        {
+          std::filesystem::remove(temporary);
+          throw std::runtime_error("cannot write the checkpoint " + temporary);
+        }
+      }
+      std::error_code error;
+      std::filesystem::rename(temporary, filename, error);
+      if (error)
+        throw std::runtime_error("cannot rename " + temporary + " to "
+                                 + filename + ": " + error.message());
+    }
+
+
+    Checkpoint
+    read_checkpoint(const std::string &filename)
+    {
+      std::ifstream stream(filename, std::ios::binary);
+      if (!stream)
+        throw InputError("--resume: there is no checkpoint " + filename
+                         + " (checkpoints are written every Checkpoint/"
+                           "Interval increments and at a clean stop)");
+      Checkpoint checkpoint;
+      try
+      {
+        char read_tag[sizeof(tag)] = {};
+        stream.read(read_tag, sizeof(tag));
+        if (!stream || std::string(read_tag) != tag)
+          throw std::runtime_error("not a deepdraw checkpoint");
+        checkpoint.parameters = get_string(stream);
+        checkpoint.state.read(stream);
+        checkpoint.output = read_output_progress(stream);
+      }
+      catch (const std::runtime_error &error)
+      {
+        throw InputError("--resume: " + filename
+                         + " is not a usable checkpoint: " + error.what());
+      }
+      return checkpoint;
+    }
+
+
+    std::string
+    flatten_parameters(const ParameterHandler &prm)
+    {
+      std::ostringstream printed;
+      prm.print_parameters(printed,
+                           ParameterHandler::OutputStyle(
+                             ParameterHandler::ShortPRM
+                             | ParameterHandler::KeepDeclarationOrder));
+      std::vector<std::string> path;
+      std::ostringstream       listing;
+      std::istringstream       lines(printed.str());
+      std::string              line;
+      while (std::getline(lines, line))
+      {
+        line = trim(line);
+        if (line.rfind("subsection ", 0) == 0)
+          path.push_back(trim(line.substr(11)));
+        else if (line == "end" && !path.empty())
+          path.pop_back();
+        else if (line.rfind("set ", 0) == 0)
+        {
+          const auto  equal = line.find('=');
+          std::string name;
+          for (const std::string &section : path)
+            name += section + "/";
+          listing << name << trim(line.substr(4, equal - 4)) << " = "
+                  << trim(line.substr(equal + 1)) << '\n';
+        }
+      }
+      return listing.str();
+    }
+
+
+    std::vector<std::string>
+    changed_model_parameters(const std::string &checkpointed,
+                             const std::string &current)
+    {
+      const auto               old_values = parse_listing(checkpointed);
+      const auto               new_values = parse_listing(current);
+      std::vector<std::string> changes;
+      for (const auto &[name, value] : new_values)
+      {
+        if (may_change_on_resume(name))
+          continue;
+        const auto old = old_values.find(name);
+        if (old == old_values.end())
+          changes.push_back(name + ": not in the checkpoint");
+        else if (old->second != value)
+          changes.push_back(name + ": " + old->second + " -> " + value);
+      }
+      for (const auto &[name, value] : old_values)
+        if (!may_change_on_resume(name) && new_values.count(name) == 0)
+          changes.push_back(name + ": no longer a parameter");
+      return changes;
+    }
+
+
+    std::vector<std::pair<std::string, std::uintmax_t>>
+    csv_table_sizes(const std::string &directory)
+    {
+      std::vector<std::pair<std::string, std::uintmax_t>> sizes;
+      for (const auto &entry : std::filesystem::directory_iterator(directory))
+        if (entry.is_regular_file() && entry.path().extension() == ".csv")
+          sizes.emplace_back(entry.path().filename().string(),
+                             entry.file_size());
+      std::sort(sizes.begin(), sizes.end());
+      return sizes;
+    }
+
+
+    void
+    truncate_tables(
+      const std::string                                         &directory,
+      const std::vector<std::pair<std::string, std::uintmax_t>> &sizes)
+    {
+      for (const auto &[name, size] : sizes)
+      {
+        const std::string path = directory + "/" + name;
+        std::error_code   error;
+        const auto        actual = std::filesystem::file_size(path, error);
+        if (error || actual < size)
+          throw InputError(
+            "--resume: " + path
+            + (error ? " is missing" : " is shorter than at the checkpoint")
+            + "; the output directory was changed after the "
+              "checkpoint was written");
+        std::filesystem::resize_file(path, size);
+      }
+    }
+  } // namespace state
+} // namespace deepdraw
