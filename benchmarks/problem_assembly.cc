@@ -56,7 +56,8 @@ main(int argc, char *argv[])
                               "  set Output directory = bench-assembly\n"
                               "  set Write VTU = false\nend\n");
   problem::FormingProblem forming_problem(prm);
-  const DoFHandler<3>    &dof_handler = forming_problem.get_dof_handler();
+  const DoFHandler<3>    &dof_handler
+    = forming_problem.access().sheet().dof_handler();
   const unsigned int n_cells = dof_handler.get_triangulation().n_active_cells();
 
   // du = A X + bending, A: 1 % biaxial stretch, -1.6 % thinning, shear and

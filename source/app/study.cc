@@ -15,6 +15,7 @@
 #include <deepdraw/contact/contact_coupling.h>
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/io/output_parameters.h>
+#include <deepdraw/postprocess/profile_travels.h>
 #include <deepdraw/problem/forming_problem.h>
 #include <deepdraw/process/process_parameters.h>
 #include <filesystem>
@@ -271,13 +272,9 @@ namespace deepdraw
         }
         if (largest_load < 0.)
           largest_load = process.final_load;
-        for (const double travel : output.thickness_profile_travels)
-          if (travel <= largest_load * (1. + 1e-12))
-            setup.travels.push_back(travel);
-        std::sort(setup.travels.begin(), setup.travels.end());
-        setup.travels.erase(std::unique(setup.travels.begin(),
-                                        setup.travels.end()),
-                            setup.travels.end());
+        setup.travels
+          = postprocess::travels_within(postprocess::parse_profile_travels(prm),
+                                        largest_load);
         return setup;
       }
 

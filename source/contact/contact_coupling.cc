@@ -44,17 +44,18 @@ namespace deepdraw
       }
 
       Tensor<1, 3>
-      evaluate_translation(const ToolDefinition &tool, const double load)
+      evaluate_translation(const ToolMotion &motion, const double load)
       {
-        tool.translation->set_time(load);
+        motion.translation->set_time(load);
         Vector<double> values(3);
-        tool.translation->vector_value(Point<1>(), values);
+        motion.translation->vector_value(Point<1>(), values);
         for (unsigned int d = 0; d < 3; ++d)
           require_finite(values[d],
-                         tool.parameter_prefix + "Translation",
-                         tool.translation_expression,
+                         motion.translation_parameter,
+                         motion.translation_expression,
                          load);
-        return Tensor<1, 3>({values[0], values[1], values[2]});
+        const Tensor<1, 3> translation({values[0], values[1], values[2]});
+        return motion.relative ? motion.origin + translation : translation;
       }
     } // namespace
 
@@ -63,11 +64,12 @@ namespace deepdraw
     ContactCoupling::prescribed_force(const unsigned int k,
                                       const double       load) const
     {
-      definitions[k].force->set_time(load);
-      const double force = definitions[k].force->value(Point<1>());
+      const ToolMotion &motion = motions[k];
+      motion.force->set_time(load);
+      const double force = motion.force->value(Point<1>());
       require_finite(force,
-                     "Process/Blank holder force",
-                     holder_force_expression,
+                     motion.force_parameter,
+                     motion.force_expression,
                      load);
       return force;
     }
@@ -87,7 +89,8 @@ namespace deepdraw
       types::global_dof_index next = first_index;
       for (unsigned int k = 0; k < definitions.size(); ++k)
         for (const unsigned int vertex :
-             face_vertices[definitions[k].sheet_face])
+             motions[k].takes_part ? face_vertices[definitions[k].sheet_face]
+                                   : std::vector<unsigned int>())
         {
           Pair pair;
           pair.vertex           = vertex;
@@ -100,7 +103,7 @@ namespace deepdraw
         }
       position_dof.assign(definitions.size(), numbers::invalid_dof_index);
       for (unsigned int k = 0; k < definitions.size(); ++k)
-        if (definitions[k].force_controlled)
+        if (motions[k].takes_part && motions[k].force_controlled)
           position_dof[k] = next++;
       position_at_start.assign(definitions.size(), 0.);
       translation_at_start.assign(definitions.size(), Tensor<1, 3>());
@@ -153,17 +156,21 @@ namespace deepdraw
                                      const double new_load)
     {
       for (unsigned int k = 0; k < definitions.size(); ++k)
-        if (definitions[k].force_controlled)
+        if (!motions[k].takes_part)
+        {
+          // Left where it stands.
+          translation_at_start[k] = tool_list[k].translation();
+          translation_at_end[k]   = translation_at_start[k];
+        }
+        else if (motions[k].force_controlled)
         {
           translation_at_start[k] = position_at_start[k] * definitions[k].axis;
           translation_at_end[k]   = translation_at_start[k];
         }
         else
         {
-          translation_at_start[k]
-            = evaluate_translation(definitions[k], old_load);
-          translation_at_end[k]
-            = evaluate_translation(definitions[k], new_load);
+          translation_at_start[k] = evaluate_translation(motions[k], old_load);
+          translation_at_end[k]   = evaluate_translation(motions[k], new_load);
           tool_list[k].set_rigid_motion(unit_symmetric_tensor<3>(),
                                         translation_at_end[k]);
         }
@@ -203,7 +210,8 @@ namespace deepdraw
           closest.tangent_u = closest.tangent_v = Tensor<1, 3>();
           closest.x_uu = closest.x_uv = closest.x_vv = Tensor<1, 3>();
         }
-        const bool force_controlled = definitions[pair.tool].force_controlled;
+        const bool force_controlled
+          = position_dof[pair.tool] != numbers::invalid_dof_index;
         const contact::ContactPairKinematics kinematics(
           x,
           du,
@@ -234,7 +242,7 @@ namespace deepdraw
     ContactCoupling::assemble(const std::vector<Point<3>>     &positions,
                               const Vector<double>            &solution,
                               const AffineConstraints<double> &constraints,
-                              SparseMatrix<double>            *matrix,
+                              linear_algebra::SystemMatrix    *matrix,
                               Vector<double>                  &rhs,
                               const double                     new_load,
                               const bool                       predictor)
@@ -242,7 +250,7 @@ namespace deepdraw
       Timer timer;
       // Force-controlled tools sit at their current unknown position.
       for (unsigned int k = 0; k < definitions.size(); ++k)
-        if (definitions[k].force_controlled)
+        if (position_dof[k] != numbers::invalid_dof_index)
         {
           translation_at_end[k]
             = solution[position_dof[k]] * definitions[k].axis;
@@ -317,11 +325,7 @@ namespace deepdraw
         if (with_z)
           local_rhs(6) = -(a * result.force);
         if (matrix != nullptr)
-          constraints.distribute_local_to_global(local_matrix,
-                                                 local_rhs,
-                                                 dofs,
-                                                 *matrix,
-                                                 rhs);
+          matrix->add_local(constraints, local_matrix, local_rhs, dofs, rhs);
         else
           constraints.distribute_local_to_global(local_rhs, dofs, rhs);
       }
@@ -331,7 +335,7 @@ namespace deepdraw
       // F / r along its axis towards the sheet instead (only the iterates
       // change, not the converged solution).
       for (unsigned int k = 0; k < definitions.size(); ++k)
-        if (definitions[k].force_controlled)
+        if (position_dof[k] != numbers::invalid_dof_index)
         {
           rhs[position_dof[k]] += prescribed_force(k, new_load);
           if (active_pairs[k] == 0 && matrix != nullptr)
@@ -376,7 +380,7 @@ namespace deepdraw
     {
       double error = 0.;
       for (unsigned int k = 0; k < definitions.size(); ++k)
-        if (definitions[k].force_controlled)
+        if (position_dof[k] != numbers::invalid_dof_index)
         {
           const double force = std::abs(prescribed_force(k, load));
           error              = std::max(error,
@@ -391,7 +395,7 @@ namespace deepdraw
     ContactCoupling::commit(const Vector<double> &solution)
     {
       for (unsigned int k = 0; k < definitions.size(); ++k)
-        if (definitions[k].force_controlled)
+        if (position_dof[k] != numbers::invalid_dof_index)
           position_at_start[k] = solution[position_dof[k]];
       for (Pair &pair : pairs)
         pair.open_at_start
@@ -404,6 +408,12 @@ namespace deepdraw
     {
       ContactHistory history;
       history.tool_position = position_at_start;
+      for (unsigned int k = 0; k < motions.size(); ++k)
+        for (unsigned int d = 0; d < 3; ++d)
+        {
+          history.tool_origin.push_back(motions[k].origin[d]);
+          history.tool_translation.push_back(tool_list[k].translation()[d]);
+        }
       history.pair_open.reserve(pairs.size());
       history.pair_status.reserve(pairs.size());
       for (const Pair &pair : pairs)
@@ -421,7 +431,8 @@ namespace deepdraw
     {
       if (history.pair_open.size() != pairs.size()
           || history.pair_status.size() != pairs.size()
-          || history.tool_position.size() != position_at_start.size())
+          || history.tool_position.size() != position_at_start.size()
+          || history.tool_origin.size() != 3 * motions.size())
         throw InputError("--resume: the contact state has "
                          + std::to_string(history.pair_open.size())
                          + " pairs and "
@@ -429,6 +440,19 @@ namespace deepdraw
                          + " tools, the model " + std::to_string(pairs.size())
                          + " and " + std::to_string(position_at_start.size()));
       position_at_start = history.tool_position;
+      // A checkpoint of the time before stages leaves the tools where the
+      // next increment puts them.
+      for (unsigned int k = 0; k < motions.size(); ++k)
+      {
+        Tensor<1, 3> translation;
+        for (unsigned int d = 0; d < 3; ++d)
+        {
+          motions[k].origin[d] = history.tool_origin[3 * k + d];
+          if (history.tool_translation.size() == 3 * motions.size())
+            translation[d] = history.tool_translation[3 * k + d];
+        }
+        tool_list[k].set_rigid_motion(unit_symmetric_tensor<3>(), translation);
+      }
       for (std::size_t p = 0; p < pairs.size(); ++p)
       {
         pairs[p].open_at_start = history.pair_open[p] != 0;
@@ -492,7 +516,20 @@ namespace deepdraw
     ContactCoupling::prescribed_translation(const unsigned int k,
                                             const double       load) const
     {
-      return evaluate_translation(definitions[k], load);
+      return evaluate_translation(motions[k], load);
+    }
+
+
+    Tensor<1, 3>
+    ContactCoupling::declared_translation(const unsigned int k,
+                                          const double       load) const
+    {
+      ToolMotion declared;
+      declared.translation            = definitions[k].translation;
+      declared.translation_expression = definitions[k].translation_expression;
+      declared.translation_parameter
+        = definitions[k].parameter_prefix + "Translation";
+      return evaluate_translation(declared, load);
     }
 
 

@@ -44,13 +44,21 @@ namespace deepdraw
     void
     ContactCoupling::check_initial_placement(
       const std::vector<Point<3>> &positions,
-      const double                 sheet_thickness) const
+      const double                 sheet_thickness,
+      const double                 load,
+      const std::vector<bool>     &tools) const
     {
       const double     depth_limit = 0.5 * sheet_thickness;
       std::vector<int> facing(definitions.size(), 0);
       std::vector<int> turned_away(definitions.size(), 0);
+      const auto       checked
+        = [&](const unsigned int k) { return tools.empty() || tools[k]; };
+      std::ostringstream at_load;
+      at_load << std::setprecision(6) << load;
       for (const Pair &pair : pairs)
       {
+        if (!checked(pair.tool))
+          continue;
         geometry::ProjectionResult projection;
         if (!tool_list[pair.tool].project(positions[pair.vertex],
                                           projection,
@@ -63,9 +71,10 @@ namespace deepdraw
             "Contact/Tool " + std::to_string(pair.tool + 1) + " ('" + tool.name
             + "'): the sheet node at " + format_point(positions[pair.vertex])
             + " starts " + format_length(-projection.gap)
-            + " inside the tool at load 0, more than half the sheet "
-              "thickness; place the tool outside the blank (Translation at "
-              "t = 0)");
+            + " inside the tool at load " + at_load.str()
+            + ", more than half the sheet thickness; place the tool outside "
+              "the blank (Translation at t = "
+            + at_load.str() + ")");
         const double alignment
           = projection.normal * sheet_face_normal(tool.sheet_face);
         if (alignment < -0.5)
@@ -74,7 +83,7 @@ namespace deepdraw
           ++turned_away[pair.tool];
       }
       for (unsigned int k = 0; k < definitions.size(); ++k)
-        if (turned_away[k] > facing[k])
+        if (checked(k) && turned_away[k] > facing[k])
           throw InputError(
             "Contact/Tool " + std::to_string(k + 1) + " ('"
             + definitions[k].name
@@ -92,7 +101,7 @@ namespace deepdraw
                                        const double new_load) const
     {
       for (unsigned int k = 0; k < definitions.size(); ++k)
-        if (!definitions[k].force_controlled)
+        if (motions[k].takes_part && !motions[k].force_controlled)
         {
           const double motion = (prescribed_translation(k, new_load)
                                  - prescribed_translation(k, old_load))
@@ -114,7 +123,7 @@ namespace deepdraw
                                        const Vector<double> &solution) const
     {
       for (unsigned int k = 0; k < definitions.size(); ++k)
-        if (definitions[k].force_controlled)
+        if (position_dof[k] != numbers::invalid_dof_index)
         {
           const double motion
             = std::abs(solution[position_dof[k]] - position_at_start[k]);

@@ -9,7 +9,7 @@
 #include <deepdraw/contact/contact_coupling.h>
 #include <deepdraw/geometry/cad_tool_reader.h>
 #include <deepdraw/geometry/tool_file.h>
-#include <deepdraw/io/expression_error.h>
+#include <deepdraw/io/function_of_load.h>
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/io/printable_text.h>
 #include <filesystem>
@@ -66,34 +66,6 @@ namespace deepdraw
                            + "': the direction must not be zero");
         direction /= largest;
         return direction / direction.norm();
-      }
-
-      std::shared_ptr<FunctionParser<1>>
-      parse_function_of_load(const std::string &text,
-                             const unsigned int n_components,
-                             const std::string &parameter)
-      {
-        auto function = std::make_shared<FunctionParser<1>>(n_components);
-        // muparser's own diagnostic lines become the reason of the message
-        // (io/expression_error.h).
-        const std::string error = io::expression_error(
-          [&]()
-          {
-            function->initialize("s,t",
-                                 text,
-                                 std::map<std::string, double>(),
-                                 /*time_dependent=*/true);
-            function->set_time(0.);
-            Vector<double> values(n_components);
-            function->vector_value(Point<1>(), values);
-          });
-        if (!error.empty())
-          throw InputError(parameter + " = '" + io::one_line(text)
-                           + "': expected " + std::to_string(n_components)
-                           + " expression(s) of the load t separated by "
-                             "';' ("
-                           + error + ")");
-        return function;
       }
 
       // Names become CSV column names (tools.csv) and file names
@@ -198,22 +170,14 @@ namespace deepdraw
 
     void
     ContactCoupling::parse_parameters(ParameterHandler  &prm,
-                                      const std::string &prm_directory,
-                                      const std::string &blank_holder_force)
+                                      const std::string &prm_directory)
     {
-      // Checked even without a force-controlled tool: a bad expression is
-      // an input error wherever it is.
-      const std::shared_ptr<FunctionParser<1>> holder_force
-        = parse_function_of_load(blank_holder_force,
-                                 1,
-                                 "Process/Blank holder force");
       prm.enter_subsection("Contact");
       parameters.parse_parameters(prm);
       search_distance = prm.get_double("Search distance");
       if (!(search_distance > 0.))
         throw InputError("Contact/Search distance must be > 0 (mm), got "
                          + prm.get("Search distance"));
-      holder_force_expression = blank_holder_force;
       definitions.clear();
       for (unsigned int slot = 0; slot < n_tool_slots; ++slot)
       {
@@ -255,12 +219,12 @@ namespace deepdraw
           tool.sheet_face       = prm.get("Sheet surface") == "top" ? 5 : 4;
           tool.force_controlled = prm.get("Control") == "force";
           tool.translation_expression = prm.get("Translation");
-          tool.translation = parse_function_of_load(tool.translation_expression,
-                                                    3,
-                                                    prefix + "Translation");
-          tool.axis        = parse_direction(prm.get("Force direction"),
+          tool.translation
+            = io::parse_function_of_load(tool.translation_expression,
+                                         3,
+                                         prefix + "Translation");
+          tool.axis = parse_direction(prm.get("Force direction"),
                                       prefix + "Force direction");
-          tool.force       = holder_force;
           definitions.push_back(tool);
         }
         prm.leave_subsection();
@@ -268,62 +232,6 @@ namespace deepdraw
       prm.leave_subsection();
       law = std::make_unique<contact::AlartCurnierLaw>(
         parameters.friction_coefficient);
-    }
-
-
-    void
-    ContactCoupling::check_values(const std::vector<double> &loads,
-                                  const double               blank_diagonal,
-                                  const double               length_bound) const
-    {
-      if (!active())
-        return;
-      if (!(search_distance <= blank_diagonal))
-      {
-        std::ostringstream text;
-        text << std::setprecision(6)
-             << "Contact/Search distance = " << search_distance
-             << " mm is larger than the blank: allowed is 0 < Search "
-                "distance <= "
-             << blank_diagonal << " mm (the diagonal of the blank)";
-        throw InputError(text.str());
-      }
-      for (unsigned int k = 0; k < definitions.size(); ++k)
-        for (const double load : loads)
-        {
-          std::ostringstream text;
-          text << std::setprecision(6);
-          if (definitions[k].force_controlled)
-          {
-            definitions[k].force->set_time(load);
-            const double force = definitions[k].force->value(Point<1>());
-            if (!(std::abs(force) <= max_force))
-            {
-              text << "Process/Blank holder force = '"
-                   << io::one_line(holder_force_expression) << "' gives "
-                   << force << " N at t = " << load
-                   << "; allowed are finite forces up to " << max_force << " N";
-              throw InputError(text.str());
-            }
-          }
-          else
-          {
-            Vector<double> u(3);
-            definitions[k].translation->set_time(load);
-            definitions[k].translation->vector_value(Point<1>(), u);
-            for (unsigned int d = 0; d < 3; ++d)
-              if (!(std::abs(u[d]) <= length_bound))
-              {
-                text << definitions[k].parameter_prefix << "Translation = '"
-                     << io::one_line(definitions[k].translation_expression)
-                     << "' gives u"
-                     << "xyz"[d] << " = " << u[d] << " mm at t = " << load
-                     << "; allowed are finite translations up to "
-                     << length_bound << " mm";
-                throw InputError(text.str());
-              }
-          }
-        }
     }
 
 

@@ -27,11 +27,18 @@ namespace deepdraw
         }
         result.pairs.push_back(entry);
       }
-      for (const auto dof : position_dof)
+      for (unsigned int k = 0; k < position_dof.size(); ++k)
+      {
+        const types::global_dof_index dof = position_dof[k];
+        // Without a position unknown: where the tool stands along its axis
+        // (a tool that turns to force control starts there).
+        const double z = tool_list[k].translation() * definitions[k].axis;
         result.tool_position.push_back(
           dof == numbers::invalid_dof_index
-            ? std::array<double, 2>{{0., 0.}}
+            ? std::array<double, 2>{{z, z}}
             : std::array<double, 2>{{converged[dof], previous[dof]}});
+        result.translation.push_back(tool_list[k].translation());
+      }
       return result;
     }
 
@@ -44,6 +51,11 @@ namespace deepdraw
                               Vector<double>                       &converged,
                               Vector<double>                       &previous)
     {
+      if (parents.empty())
+      {
+        carry_over(old, converged, previous);
+        return;
+      }
       std::map<std::pair<unsigned int, unsigned int>, const PairSnapshot *>
         old_pair;
       for (const PairSnapshot &entry : old.pairs)
@@ -96,6 +108,49 @@ namespace deepdraw
           previous[position_dof[k]]  = old.tool_position[k][1];
           // create_pairs() reset it; the committed z is the converged one.
           position_at_start[k] = old.tool_position[k][0];
+        }
+    }
+
+
+    void
+    ContactCoupling::carry_over(const Snapshot &old,
+                                Vector<double> &converged,
+                                Vector<double> &previous)
+    {
+      // The same mesh (a new stage): each pair takes the state and the
+      // multipliers of the old pair of its node and tool, if there was one;
+      // a new pair starts open with no force.
+      std::map<std::pair<unsigned int, unsigned int>, const PairSnapshot *>
+        old_pair;
+      for (const PairSnapshot &entry : old.pairs)
+        old_pair[{entry.vertex, entry.tool}] = &entry;
+      for (Pair &pair : pairs)
+      {
+        const auto found = old_pair.find({pair.vertex, pair.tool});
+        pair.result      = contact::ContactPairResult();
+        if (found == old_pair.end())
+        {
+          pair.open_at_start = true;
+          pair.found         = false;
+          pair.result.state  = contact::ContactState::open;
+          continue;
+        }
+        const PairSnapshot &entry = *found->second;
+        for (unsigned int c = 0; c < 3; ++c)
+        {
+          converged[pair.first_multiplier + c] = entry.multiplier[0][c];
+          previous[pair.first_multiplier + c]  = entry.multiplier[1][c];
+        }
+        pair.open_at_start = entry.open_at_start;
+        pair.found         = entry.found;
+        pair.result.state  = entry.state;
+      }
+      for (unsigned int k = 0; k < position_dof.size(); ++k)
+        if (position_dof[k] != numbers::invalid_dof_index)
+        {
+          converged[position_dof[k]] = old.tool_position[k][0];
+          previous[position_dof[k]]  = old.tool_position[k][1];
+          position_at_start[k]       = old.tool_position[k][0];
         }
     }
   } // namespace contact

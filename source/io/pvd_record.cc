@@ -1,3 +1,4 @@
+#include <deepdraw/io/binary_stream.h>
 #include <deepdraw/io/output_error.h>
 #include <deepdraw/io/output_file.h>
 #include <deepdraw/io/pvd_record.h>
@@ -45,6 +46,38 @@ namespace deepdraw
             << entry.file << "\"/>\n";
       out << "  </Collection>\n</VTKFile>\n";
       write_file_atomically(filename, out.str());
+    }
+
+
+    void
+    write_entries(std::ostream                        &stream,
+                  const std::vector<PvdRecord::Entry> &entries)
+    {
+      write_value(stream, entries.size());
+      for (const PvdRecord::Entry &entry : entries)
+      {
+        write_value(stream, entry.time);
+        write_value(stream, entry.part);
+        write_string(stream, entry.file);
+      }
+    }
+
+
+    std::vector<PvdRecord::Entry>
+    read_entries(std::istream &stream, const std::string &source)
+    {
+      std::size_t n = 0;
+      read_value(stream, n, source);
+      std::vector<PvdRecord::Entry> entries;
+      for (std::size_t i = 0; i < n && stream; ++i)
+      {
+        PvdRecord::Entry entry;
+        read_value(stream, entry.time, source);
+        read_value(stream, entry.part, source);
+        entry.file = read_string(stream, source);
+        entries.push_back(entry);
+      }
+      return entries;
     }
   } // namespace io
 } // namespace deepdraw

@@ -1,21 +1,11 @@
-// Parameters, set-up and the increment loop of FormingProblem; one
-// increment's Newton iterations in forming_problem_newton.cc, the assembly in
-// forming_problem_assembly.cc, the output in forming_problem_output.cc.
+// Set-up of FormingProblem: the model for the first stage, the Newton
+// system of a mesh and a stage, the transition from one stage to the next
+// and the commit of a converged increment. The loop is in
+// forming_problem_run.cc, one increment in forming_problem_newton.cc.
 #include <algorithm>
-#include <cmath>
-#include <deal.II/base/timer.h>
-#include <deal.II/dofs/dof_tools.h>
-#include <deal.II/grid/grid_tools.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deepdraw/fe/hanging_node_constraints.h>
 #include <deepdraw/fe/selective_reduced_quadrature.h>
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/problem/forming_problem.h>
-#include <filesystem>
-#include <iomanip>
-#include <iostream>
-#include <set>
-#include <sstream>
 
 namespace deepdraw
 {
@@ -24,372 +14,195 @@ namespace deepdraw
     void
     FormingProblem::declare_parameters(ParameterHandler &prm)
     {
-      blank::BlankGeometry::declare_parameters(prm);
-      process::ProcessParameters::declare_parameters(prm);
-      postprocess::ProcessTables::declare_parameters(prm);
-      prm.enter_subsection("Material");
-      material::MaterialParameters::declare_parameters(prm);
-      prm.leave_subsection();
-      prm.enter_subsection("Finite element");
-      fe::ElementParameters::declare_parameters(prm);
-      prm.leave_subsection();
-      process::PrescribedDisplacements::declare_parameters(prm);
-      solver::IncrementControlParameters::declare_parameters(prm);
-      solver::NewtonParameters::declare_parameters(prm);
-      solver::LinearSolverParameters::declare_parameters(prm);
-      io::OutputParameters::declare_parameters(prm);
-      geometry::SquareCupToolParameters::declare_parameters(prm);
-      contact::ContactCoupling::declare_parameters(prm);
-      state::CheckpointParameters::declare_parameters(prm);
-      adaptivity::AdaptivityParameters::declare_parameters(prm);
+      ModelParameters::declare_parameters(prm);
     }
 
 
     FormingProblem::FormingProblem(ParameterHandler  &prm,
                                    const std::string &input_directory)
-        : fe(FE_Q<3>(1), 3)
-        , dof_handler(triangulation)
-        , fe_scalar(1)
-        , scalar_dof_handler(triangulation)
     {
-      geometry.parse_parameters(prm, input_directory);
-      process_parameters.parse_parameters(prm);
-      process_tables.parse_parameters(prm, geometry);
-      prm.enter_subsection("Material");
-      material_parameters.parse_parameters(prm);
-      prm.leave_subsection();
-      prm.enter_subsection("Finite element");
-      element_parameters.parse_parameters(prm);
-      prm.leave_subsection();
-      prescribed.parse_parameters(prm,
-                                  geometry.symmetry_plane_x,
-                                  geometry.symmetry_plane_y);
-      increment_parameters.parse_parameters(prm);
-      increment_parameters.final_load = process_parameters.final_load;
-      newton_parameters.parse_parameters(prm);
-      linear_solver_parameters.parse_parameters(prm);
-      output_parameters.parse_parameters(prm);
-      square_cup_tool_parameters.parse_parameters(prm);
-      contact.parse_parameters(prm,
-                               input_directory,
-                               process_parameters.blank_holder_force);
-      checkpoint_parameters.parse_parameters(prm);
-      adaptivity_parameters.parse_parameters(prm);
-      parameter_listing = state::flatten_parameters(prm);
-      check_input();
+      parameters.parse_parameters(prm, input_directory);
+      contact_coupling.parse_parameters(prm, input_directory);
+      contact_coupling.parse_stages(parameters.stages);
+      postprocessors.parse_parameters(prm);
+      parameters.check(contact_coupling);
+      adaptation
+        = std::make_unique<adaptivity::MeshAdaptation>(parameters.adaptivity);
 
-      // Thickness profiles are square-cup tables: runs with tools only.
-      if (contact.active())
-        for (const double travel : output_parameters.thickness_profile_travels)
-          if (travel <= process_parameters.final_load * (1. + 1e-12))
-            profile_travels.push_back(travel);
-      std::sort(profile_travels.begin(), profile_travels.end());
-      profile_travels.erase(std::unique(profile_travels.begin(),
-                                        profile_travels.end()),
-                            profile_travels.end());
-
-      material
-        = std::make_unique<material::HillPlasticity>(material_parameters);
-      element = std::make_unique<fe::HexahedronElement>(element_parameters,
-                                                        *material,
-                                                        fe);
-      linear_solver
-        = std::make_unique<solver::LinearSolver>(linear_solver_parameters);
-      setup_system();
-      process_tables.set_up(contact,
-                            process_parameters.final_load,
-                            *sheet_thickness,
-                            initial_vertices);
+      material_model
+        = std::make_unique<material::HillPlasticity>(parameters.material);
+      linear_system
+        = linear_algebra::make_serial_system(parameters.linear_solver);
+      discretisation.create(parameters.geometry);
+      element = std::make_unique<fe::HexahedronElement>(
+        parameters.element,
+        *material_model,
+        discretisation.dof_handler().get_fe());
+      if (contact_coupling.active())
+        contact_coupling.create_tools(parameters.square_cup_tools,
+                                      parameters.geometry.thickness,
+                                      parameters.geometry.symmetry_plane_x,
+                                      parameters.geometry.symmetry_plane_y);
+      for (const process::Stage &stage : parameters.stages)
+        for (const process::PrescribedDisplacement &entry :
+             stage.prescribed.entries)
+          faces_with_reactions.push_back(entry.boundary_id);
+      std::sort(faces_with_reactions.begin(), faces_with_reactions.end());
+      faces_with_reactions.erase(std::unique(faces_with_reactions.begin(),
+                                             faces_with_reactions.end()),
+                                 faces_with_reactions.end());
+      set_up_system();
+      initialize_state();
     }
 
 
     void
-    FormingProblem::setup_system()
+    FormingProblem::set_up_system()
     {
-      geometry.create_mesh(triangulation);
-      initial_vertices = triangulation.get_vertices();
-      // The mean in-plane element size of the blank (for the rectangle as
-      // before, to the bit); the contact augmentation keeps it on refined
-      // meshes (D82).
-      blank_element_size
-        = geometry.outline == blank::BlankGeometry::Outline::rectangle
-            ? std::sqrt(geometry.length / geometry.elements_along_x
-                        * geometry.width / geometry.elements_along_y)
-            : std::sqrt(GridTools::volume(triangulation) / geometry.thickness
-                        / geometry.n_plane_cells());
-      if (contact.active())
-        contact.create_tools(square_cup_tool_parameters,
-                             geometry.thickness,
-                             geometry.symmetry_plane_x,
-                             geometry.symmetry_plane_y);
-      dof_handler.distribute_dofs(fe);
-      setup_dofs();
-      state.total_displacement.reinit(dof_handler.n_dofs());
-      state.converged_solution.reinit(newton_unknowns.size());
+      const types::global_dof_index n_u = discretisation.n_displacement_dofs();
+      types::global_dof_index       n   = n_u;
+      // The augmentation keeps the element size of the blank's mesh on
+      // refined meshes: it changes the iterates, not the converged
+      // solution (D82).
+      if (contact_coupling.active())
+        n += contact_coupling.create_pairs(discretisation.face_vertices(),
+                                           discretisation.vertex_dofs(),
+                                           n_u,
+                                           parameters.material.youngs_modulus,
+                                           discretisation.blank_element_size());
+      linear_algebra::SystemLayout layout;
+      layout.multiplier_blocks = contact_coupling.multiplier_blocks();
+      constraints.set_up(discretisation,
+                         stage().prescribed,
+                         layout.multiplier_blocks,
+                         n);
+      layout.dof_handler           = &discretisation.dof_handler();
+      layout.constraints           = &constraints.homogeneous();
+      layout.n_unknowns            = n;
+      layout.add_contact_couplings = [this](DynamicSparsityPattern &dsp)
+      { contact_coupling.add_sparsity(dsp); };
+      layout.tool_positions = contact_coupling.tool_position_unknowns();
+      linear_system->reinit(layout);
+      internal_forces.reinit(n);
+      newton_unknowns.reinit(n);
+      thickness_measurement.set_up(discretisation.triangulation(),
+                                   discretisation.initial_vertices());
+      thickness_measurement.update(discretisation.triangulation(),
+                                   parameters.geometry.thickness);
+      postprocessors.initialize(*this);
+    }
 
-      // Initial state: unstressed, material axes rotated about z by
-      // Material/Rolling direction angle.
-      QuadraturePointHistory initial_point;
-      initial_point.material_axes = material_parameters.initial_material_axes();
-      state.history.assign(triangulation.n_active_cells()
-                             * fe::n_weighted_points,
-                           initial_point);
-      trial_history  = state.history;
-      state.vertices = triangulation.get_vertices();
-      state.enhanced_parameters.assign(
-        fe::n_enhanced_parameters(element_parameters.technology) > 0
-          ? triangulation.n_active_cells()
-          : 0,
+
+    void
+    FormingProblem::initialize_state()
+    {
+      committed.total_displacement.reinit(discretisation.n_displacement_dofs());
+      committed.converged_solution.reinit(newton_unknowns.size());
+      // Unstressed, material axes rotated about z by Material/Rolling
+      // direction angle.
+      fe::QuadraturePointHistory initial_point;
+      initial_point.material_axes = parameters.material.initial_material_axes();
+      const unsigned int n_cells
+        = discretisation.triangulation().n_active_cells();
+      committed.history.assign(n_cells * fe::n_weighted_points, initial_point);
+      committed.vertices = discretisation.triangulation().get_vertices();
+      committed.enhanced_parameters.assign(
+        fe::n_enhanced_parameters(parameters.element.technology) > 0 ? n_cells
+                                                                     : 0,
         fe::EnhancedParameters());
-      trial_enhanced_parameters = state.enhanced_parameters;
+      trial_history             = committed.history;
+      trial_enhanced_parameters = committed.enhanced_parameters;
+      committed.next_increment
+        = std::min(stage().load_stepping.initial_increment,
+                   stage().load_stepping.maximum_increment);
+    }
 
-      reaction_faces.clear();
-      for (const process::PrescribedDisplacement &entry : prescribed.entries)
-        if (std::find(reaction_faces.begin(),
-                      reaction_faces.end(),
-                      entry.boundary_id)
-            == reaction_faces.end())
-          reaction_faces.push_back(entry.boundary_id);
-      std::sort(reaction_faces.begin(), reaction_faces.end());
 
-      update_cell_geometry();
-      compute_thickness();
+    const process::Stage &
+    FormingProblem::stage() const
+    {
+      return parameters.stages[committed.stage];
     }
 
 
     void
-    FormingProblem::setup_dofs()
+    FormingProblem::begin_stage(const unsigned int index)
     {
-      // Hanging vertices of a refined mesh (doc/theory.md §8): their dofs
-      // follow their masters, so they are neither prescribed nor contact
-      // nodes (D82).
-      hanging_node_constraints.clear();
-      fe::make_q1_hanging_node_constraints(dof_handler,
-                                           hanging_node_constraints);
-      hanging_node_constraints.close();
-      scalar_dof_handler.distribute_dofs(fe_scalar);
-
-      vertex_dofs.assign(triangulation.n_vertices(),
-                         {{numbers::invalid_dof_index,
-                           numbers::invalid_dof_index,
-                           numbers::invalid_dof_index}});
-      dof_initial_position.resize(dof_handler.n_dofs());
-      dof_component.resize(dof_handler.n_dofs());
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        for (const unsigned int v : cell->vertex_indices())
-          for (unsigned int c = 0; c < 3; ++c)
-          {
-            const auto dof = cell->vertex_dof_index(v, c);
-            vertex_dofs[cell->vertex_index(v)][c] = dof;
-            dof_initial_position[dof] = initial_vertices[cell->vertex_index(v)];
-            dof_component[dof]        = c;
-          }
-
-      // Vertices of each face of the blank (by boundary id), sorted.
-      std::vector<std::vector<unsigned int>> face_vertices(6);
-      for (const auto &cell : triangulation.active_cell_iterators())
-        for (const auto &face : cell->face_iterators())
-          if (face->at_boundary())
-            for (const unsigned int v : face->vertex_indices())
-              face_vertices[face->boundary_id()].push_back(
-                face->vertex_index(v));
-      for (unsigned int id = 0; id < face_vertices.size(); ++id)
+      // The pairs of the tools that stay keep their state and forces, the
+      // tools that leave take theirs with them, those that come start open
+      // (D101).
+      contact::ContactCoupling::Snapshot snapshot;
+      if (contact_coupling.active())
+        snapshot
+          = contact_coupling.snapshot(committed.converged_solution,
+                                      committed.previous_converged_solution);
+      std::vector<bool> new_tools(contact_coupling.tools().size(), false);
+      for (unsigned int k = 0; k < new_tools.size(); ++k)
+        new_tools[k] = !contact_coupling.takes_part(k);
+      committed.stage           = index;
+      committed.stage_completed = false;
+      contact_coupling.begin_stage(index);
+      set_up_system();
+      const types::global_dof_index n_u = discretisation.n_displacement_dofs();
+      Vector<double>                converged(newton_unknowns.size());
+      for (types::global_dof_index i = 0; i < n_u; ++i)
+        converged[i] = committed.converged_solution[i];
+      Vector<double> before(newton_unknowns.size());
+      for (types::global_dof_index i = 0; i < n_u; ++i)
+        before[i] = committed.previous_converged_solution[i];
+      if (contact_coupling.active())
       {
-        auto &vertices = face_vertices[id];
-        std::sort(vertices.begin(), vertices.end());
-        vertices.erase(std::unique(vertices.begin(), vertices.end()),
-                       vertices.end());
-        face_dofs[id].clear();
-        for (const unsigned int vertex : vertices)
-          face_dofs[id].insert(face_dofs[id].end(),
-                               vertex_dofs[vertex].begin(),
-                               vertex_dofs[vertex].end());
-        std::sort(face_dofs[id].begin(), face_dofs[id].end());
+        contact_coupling.transfer(snapshot, {}, {}, {}, converged, before);
+        committed.contact = contact_coupling.committed_history();
       }
+      committed.converged_solution          = converged;
+      committed.previous_converged_solution = before;
+      // A new stage starts from the tangent predictor: the last increment
+      // of another stage says nothing about the first of this one.
+      committed.last_load_increment = 0.;
+      committed.next_increment
+        = std::min(stage().load_stepping.initial_increment,
+                   stage().load_stepping.maximum_increment);
+      newton_unknowns = committed.converged_solution;
 
-      // The faces' reactions sum over all their vertices; prescribed dofs
-      // and contact pairs are those of the vertices that are not hanging.
-      for (auto &vertices : face_vertices)
-        vertices.erase(
-          std::remove_if(vertices.begin(),
-                         vertices.end(),
-                         [&](const unsigned int vertex) {
-                           return hanging_node_constraints.is_constrained(
-                             vertex_dofs[vertex][0]);
-                         }),
-          vertices.end());
-
-      // Prescribed dofs; a later entry overrides an earlier one.
-      std::map<types::global_dof_index, const process::PrescribedDisplacement *>
-        owner;
-      for (const process::PrescribedDisplacement &entry : prescribed.entries)
-        for (const unsigned int vertex : face_vertices[entry.boundary_id])
-          owner[vertex_dofs[vertex][entry.component]] = &entry;
-      prescribed_dofs.assign(owner.begin(), owner.end());
-
-      // Contact unknowns follow the displacements (block system of
-      // reference Eq. 19). The augmentation keeps the element size of the
-      // blank's mesh on refined meshes: it changes the iterates, not the
-      // converged solution (D82).
-      types::global_dof_index n_unknowns = dof_handler.n_dofs();
-      if (contact.active())
+      // A tool that comes in must not start inside the sheet (D56).
+      for (unsigned int k = 0; k < new_tools.size(); ++k)
+        new_tools[k] = new_tools[k] && contact_coupling.takes_part(k);
+      if (std::count(new_tools.begin(), new_tools.end(), true) > 0)
       {
-        n_unknowns += contact.create_pairs(face_vertices,
-                                           vertex_dofs,
-                                           dof_handler.n_dofs(),
-                                           material_parameters.youngs_modulus,
-                                           blank_element_size);
-      }
-
-      const std::vector<solver::MultiplierBlock> multiplier_blocks
-        = contact.multiplier_blocks();
-      constrained_multipliers.clear();
-      for (const solver::MultiplierBlock &block : multiplier_blocks)
-        for (unsigned int c = 0; c < 3; ++c)
-          if (owner.count(block.displacement[c]) > 0)
-            constrained_multipliers.push_back(block.multiplier[c]);
-      homogeneous_constraints.clear();
-      homogeneous_constraints.reinit(complete_index_set(n_unknowns));
-      for (const auto &[dof, entry] : prescribed_dofs)
-        homogeneous_constraints.add_line(dof);
-      for (const auto dof : constrained_multipliers)
-        homogeneous_constraints.add_line(dof);
-      add_hanging_node_constraints(homogeneous_constraints);
-      homogeneous_constraints.close();
-
-      DynamicSparsityPattern displacement_dsp(dof_handler.n_dofs(),
-                                              dof_handler.n_dofs());
-      DoFTools::make_sparsity_pattern(dof_handler,
-                                      displacement_dsp,
-                                      homogeneous_constraints,
-                                      /*keep_constrained_dofs=*/true);
-      DynamicSparsityPattern dsp(n_unknowns, n_unknowns);
-      for (types::global_dof_index row = 0; row < dof_handler.n_dofs(); ++row)
-        for (auto entry = displacement_dsp.begin(row);
-             entry != displacement_dsp.end(row);
-             ++entry)
-          dsp.add(row, entry->column());
-      contact.add_sparsity(dsp);
-      sparsity_pattern.copy_from(dsp);
-      system_matrix.reinit(sparsity_pattern);
-      find_cell_matrix_positions();
-      std::vector<bool> constrained(n_unknowns, false);
-      for (const auto &line : homogeneous_constraints.get_lines())
-        constrained[line.index] = true;
-      linear_solver->set_multiplier_blocks(sparsity_pattern,
-                                           dof_handler.n_dofs(),
-                                           multiplier_blocks,
-                                           contact.tool_position_unknowns(),
-                                           constrained);
-      system_rhs.reinit(n_unknowns);
-      internal_force.reinit(n_unknowns);
-      newton_unknowns.reinit(n_unknowns);
-      set_up_thickness_measurement();
-    }
-
-
-    void
-    FormingProblem::set_up_thickness_measurement()
-    {
-      // The thickness at every vertex is that at its initial (X, Y), found
-      // on the initial surfaces of the current mesh (D72); on a refined
-      // mesh the refined faces, hanging vertices included (D85).
-      sheet_thickness
-        = std::make_unique<blank::SheetThickness>(triangulation,
-                                                  initial_vertices);
-      vertex_locations.assign(initial_vertices.size(),
-                              blank::SheetThickness::Location());
-      for (const auto &cell : triangulation.active_cell_iterators())
-        for (const unsigned int v : cell->vertex_indices())
+        contact_coupling.start_increment(committed.load, committed.load);
+        assemble(newton_unknowns, constraints.homogeneous(), false);
+        try
         {
-          const Point<3> &X   = initial_vertices[cell->vertex_index(v)];
-          const auto location = sheet_thickness->locate(Point<2>(X[0], X[1]));
-          if (!location)
-            throw InputError("Geometry: the vertex at (" + std::to_string(X[0])
-                             + ", " + std::to_string(X[1])
-                             + ") is not over both the bottom and the top "
-                               "face of the sheet mesh");
-          vertex_locations[cell->vertex_index(v)] = *location;
+          contact_coupling.check_initial_placement(
+            discretisation.triangulation().get_vertices(),
+            parameters.geometry.thickness,
+            committed.load,
+            new_tools);
         }
-      set_up_thickness_profiles();
-    }
-
-
-    void
-    FormingProblem::add_hanging_node_constraints(
-      AffineConstraints<double> &constraints) const
-    {
-      for (const auto &line : hanging_node_constraints.get_lines())
-      {
-        constraints.add_line(line.index);
-        constraints.add_entries(line.index, line.entries);
+        catch (const InputError &error)
+        {
+          stop_cleanly("stage " + std::to_string(index + 1) + " '"
+                       + stage().name + "' cannot begin: " + error.what());
+        }
       }
-    }
-
-
-    void
-    FormingProblem::set_up_prescribed_increment(const double old_load,
-                                                const double new_load)
-    {
-      predictor_constraints.clear();
-      for (const auto &[dof, entry] : prescribed_dofs)
-      {
-        const Point<3> &X = dof_initial_position[dof];
-        predictor_constraints.add_line(dof);
-        predictor_constraints.set_inhomogeneity(
-          dof,
-          prescribed.value(*entry, X, new_load)
-            - prescribed.value(*entry, X, old_load));
-      }
-      for (const auto dof : constrained_multipliers)
-        predictor_constraints.add_line(dof);
-      add_hanging_node_constraints(predictor_constraints);
-      predictor_constraints.close();
-    }
-
-
-    void
-    FormingProblem::prepare_increment(const double old_load,
-                                      const double new_load)
-    {
-      set_up_prescribed_increment(old_load, new_load);
-      if (contact.active())
-        contact.start_increment(old_load, new_load);
-      start_load  = old_load;
-      target_load = new_load;
-    }
-
-
-    const Vector<double> &
-    FormingProblem::get_newton_unknowns() const
-    {
-      return state.converged_solution;
-    }
-
-
-    void
-    FormingProblem::start_enhanced_parameters(const double ratio)
-    {
-      trial_enhanced_parameters = state.enhanced_parameters;
-      for (fe::EnhancedParameters &cell : trial_enhanced_parameters)
-        cell.scale(ratio);
     }
 
 
     void
     FormingProblem::commit_increment()
     {
-      state.history             = trial_history;
-      state.enhanced_parameters = trial_enhanced_parameters;
-      hanging_node_constraints.distribute(newton_unknowns);
-      state.previous_converged_solution = state.converged_solution;
-      state.converged_solution          = newton_unknowns;
-      state.last_load_increment         = target_load - start_load;
-      state.load                        = target_load;
-      if (contact.active())
+      committed.history             = trial_history;
+      committed.enhanced_parameters = trial_enhanced_parameters;
+      discretisation.hanging_node_constraints().distribute(newton_unknowns);
+      committed.previous_converged_solution = committed.converged_solution;
+      committed.converged_solution          = newton_unknowns;
+      committed.last_load_increment         = target_load - start_load;
+      committed.load                        = target_load;
+      if (contact_coupling.active())
       {
-        contact.commit(newton_unknowns);
-        state.contact = contact.committed_history();
+        contact_coupling.commit(newton_unknowns);
+        committed.contact = contact_coupling.committed_history();
       }
       move_mesh();
     }
@@ -400,125 +213,15 @@ namespace deepdraw
     {
       // Hanging dofs follow their masters (the predictor's damped step can
       // leave them behind).
-      hanging_node_constraints.distribute(newton_unknowns);
-      for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
-        state.total_displacement[i] += newton_unknowns[i];
-      // Updated Lagrangian: the converged configuration becomes the
-      // reference of the next increment (step-18 moves the vertices too).
-      std::vector<bool> moved(triangulation.n_vertices(), false);
-      for (const auto &cell : triangulation.active_cell_iterators())
-        for (const unsigned int v : cell->vertex_indices())
-          if (!moved[cell->vertex_index(v)])
-          {
-            moved[cell->vertex_index(v)] = true;
-            for (unsigned int c = 0; c < 3; ++c)
-              cell->vertex(v)[c]
-                += newton_unknowns[vertex_dofs[cell->vertex_index(v)][c]];
-          }
-      state.vertices = triangulation.get_vertices();
-      update_cell_geometry();
-      compute_thickness();
-    }
-
-
-    const DoFHandler<3> &
-    FormingProblem::get_dof_handler() const
-    {
-      return dof_handler;
-    }
-
-
-    const Vector<double> &
-    FormingProblem::get_total_displacement() const
-    {
-      return state.total_displacement;
-    }
-
-
-    const std::vector<Point<3>> &
-    FormingProblem::get_initial_vertices() const
-    {
-      return initial_vertices;
-    }
-
-
-    const state::SimulationState &
-    FormingProblem::get_state() const
-    {
-      return state;
-    }
-
-
-    const std::vector<QuadraturePointHistory> &
-    FormingProblem::get_history() const
-    {
-      return state.history;
-    }
-
-
-    const std::vector<double> &
-    FormingProblem::get_vertex_thickness() const
-    {
-      return vertex_thickness;
-    }
-
-
-    const blank::SheetThickness &
-    FormingProblem::get_sheet_thickness() const
-    {
-      return *sheet_thickness;
-    }
-
-
-    const std::vector<double> &
-    FormingProblem::last_residuals() const
-    {
-      return residual_history;
-    }
-
-
-    const contact::ContactCoupling &
-    FormingProblem::get_contact() const
-    {
-      return contact;
-    }
-
-
-    types::global_dof_index
-    FormingProblem::n_displacement_dofs() const
-    {
-      return dof_handler.n_dofs();
-    }
-
-
-    const std::vector<FormingProblem::RefinementRecord> &
-    FormingProblem::refinement_records() const
-    {
-      return refinement_history;
-    }
-
-
-    const Vector<double> &
-    FormingProblem::get_internal_force() const
-    {
-      return internal_force;
-    }
-
-
-    unsigned int
-    FormingProblem::last_plastic_points() const
-    {
-      return n_plastic_points;
-    }
-
-
-    Tensor<1, 3>
-    FormingProblem::face_reaction(const unsigned int boundary_id) const
-    {
-      Tensor<1, 3> reaction;
-      for (const auto dof : face_dofs[boundary_id])
-        reaction[dof_component[dof]] += internal_force[dof];
-      return reaction;
+      discretisation.hanging_node_constraints().distribute(newton_unknowns);
+      for (types::global_dof_index i = 0;
+           i < discretisation.n_displacement_dofs();
+           ++i)
+        committed.total_displacement[i] += newton_unknowns[i];
+      discretisation.move_vertices(newton_unknowns);
+      committed.vertices = discretisation.triangulation().get_vertices();
+      thickness_measurement.update(discretisation.triangulation(),
+                                   parameters.geometry.thickness);
     }
   } // namespace problem
 } // namespace deepdraw

@@ -1,6 +1,6 @@
-// state::Checkpoint and restart of FormingProblem (doc/user_guide.md §6, D55):
-// the committed state::SimulationState, the parameter listing and the output
-// progress; a resumed run continues the same arithmetic from there.
+// Checkpoint and restart of FormingProblem (doc/user_guide.md §6, D55,
+// D101): the committed state with its stage, the parameters and the
+// output progress; a resumed run continues the same arithmetic from there.
 #include <deepdraw/fe/selective_reduced_quadrature.h>
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/problem/forming_problem.h>
@@ -13,16 +13,14 @@ namespace deepdraw
     void
     FormingProblem::save_checkpoint() const
     {
-      const std::string    &directory = output_parameters.output_directory;
-      state::OutputProgress output;
-      output.output_step = output_step;
-      if (pvd)
-        output.pvd_entries = pvd->steps();
-      output.table_sizes = committed_table_sizes;
-      state::write_checkpoint(state::checkpoint_file(directory),
-                              parameter_listing,
-                              state,
-                              output);
+      state::Checkpoint checkpoint;
+      checkpoint.parameters     = parameters.listing;
+      checkpoint.state          = committed;
+      checkpoint.table_sizes    = table_sizes;
+      checkpoint.postprocessors = postprocessors.save();
+      state::write_checkpoint(state::checkpoint_file(
+                                parameters.output.output_directory),
+                              checkpoint);
     }
 
 
@@ -30,9 +28,9 @@ namespace deepdraw
     {
       // The checkpointed state must belong to this mesh and contact set-up.
       void
-      check_sizes(const std::string &what,
-                  const std::size_t  checkpointed,
-                  const std::size_t  expected)
+      check_size(const std::string &what,
+                 const std::size_t  checkpointed,
+                 const std::size_t  expected)
       {
         if (checkpointed != expected)
           throw InputError("--resume: the checkpoint has "
@@ -45,13 +43,23 @@ namespace deepdraw
     void
     FormingProblem::restore_checkpoint()
     {
-      const std::string &directory  = output_parameters.output_directory;
-      const std::string  filename   = state::checkpoint_file(directory);
-      state::Checkpoint  checkpoint = state::read_checkpoint(filename);
+      const std::string      &directory  = parameters.output.output_directory;
+      const std::string       filename   = state::checkpoint_file(directory);
+      state::Checkpoint       checkpoint = state::read_checkpoint(filename);
+      state::SimulationState &saved      = checkpoint.state;
+      if (saved.stage >= parameters.stages.size())
+        throw InputError("--resume: " + filename + " was written in stage "
+                         + std::to_string(saved.stage + 1)
+                         + ", but the "
+                           "process has "
+                         + std::to_string(parameters.stages.size())
+                         + " stage(s)");
 
       const std::vector<std::string> changes
         = state::changed_model_parameters(checkpoint.parameters,
-                                          parameter_listing);
+                                          parameters.listing,
+                                          parameters.default_listing,
+                                          saved.stage);
       if (!changes.empty())
       {
         std::ostringstream message;
@@ -59,51 +67,52 @@ namespace deepdraw
                 << " was written for another model; changed parameters:";
         for (const std::string &change : changes)
           message << "\n  " << change;
-        message
-          << "\n(only the subsections Output and state::Checkpoint and the "
-             "stopping parameters Process/Final load, Load stepping/"
-             "Minimum increment and Load stepping/Maximum cut-backs "
-             "may change on a resume)";
+        message << "\n(only the subsections Output and Checkpoint, the "
+                   "stopping parameters Process/Final load, Load stepping/"
+                   "Minimum increment and Load stepping/Maximum cut-backs, "
+                   "and the stages after the checkpoint's may change on a "
+                   "resume)";
         throw InputError(message.str());
       }
-      state::SimulationState &saved = checkpoint.state;
       // The mesh is rebuilt from the prm; an adaptive run's refinements
-      // are replayed on it (D84).
+      // are replayed on it (D84), and the stage's tools and constraints
+      // set up.
       if (!saved.refinements.empty())
-        replay_refinements(saved.refinements);
-      check_sizes("vertices",
-                  saved.vertices.size(),
-                  triangulation.n_vertices());
-      check_sizes("displacement unknowns",
-                  saved.total_displacement.size(),
-                  dof_handler.n_dofs());
-      check_sizes("Newton unknowns",
-                  saved.converged_solution.size(),
-                  newton_unknowns.size());
+        discretisation.replay_refinements(saved.refinements);
+      committed.stage = saved.stage;
+      contact_coupling.begin_stage(saved.stage);
+      set_up_system();
+      check_size("vertices",
+                 saved.vertices.size(),
+                 discretisation.triangulation().n_vertices());
+      check_size("displacement unknowns",
+                 saved.total_displacement.size(),
+                 discretisation.n_displacement_dofs());
+      check_size("Newton unknowns",
+                 saved.converged_solution.size(),
+                 newton_unknowns.size());
       // Against the mesh (the refinements replayed), not the initial state.
-      const std::size_t n_cells = triangulation.n_active_cells();
-      check_sizes("quadrature points",
-                  saved.history.size(),
-                  n_cells * fe::n_weighted_points);
-      check_sizes("cells with enhanced parameters",
-                  saved.enhanced_parameters.size(),
-                  state.enhanced_parameters.empty() ? 0 : n_cells);
-      if (contact.active())
-        contact.restore(saved.contact);
+      const std::size_t n_cells
+        = discretisation.triangulation().n_active_cells();
+      check_size("quadrature points",
+                 saved.history.size(),
+                 n_cells * fe::n_weighted_points);
+      check_size("cells with enhanced parameters",
+                 saved.enhanced_parameters.size(),
+                 committed.enhanced_parameters.empty() ? 0 : n_cells);
+      if (contact_coupling.active())
+        contact_coupling.restore(saved.contact);
 
-      state::truncate_tables(directory, checkpoint.output.table_sizes);
-      state = std::move(saved);
+      state::truncate_tables(directory, checkpoint.table_sizes);
+      committed = std::move(saved);
       // The configuration x_t of the checkpoint (updated Lagrangian).
-      for (const auto &cell : triangulation.active_cell_iterators())
-        for (const unsigned int v : cell->vertex_indices())
-          cell->vertex(v) = state.vertices[cell->vertex_index(v)];
-      trial_history             = state.history;
-      trial_enhanced_parameters = state.enhanced_parameters;
-      newton_unknowns           = state.converged_solution;
-      output_step               = checkpoint.output.output_step;
-      resumed_pvd_steps         = checkpoint.output.pvd_entries;
-      update_cell_geometry();
-      compute_thickness();
+      discretisation.set_vertices(committed.vertices);
+      thickness_measurement.update(discretisation.triangulation(),
+                                   parameters.geometry.thickness);
+      trial_history             = committed.history;
+      trial_enhanced_parameters = committed.enhanced_parameters;
+      newton_unknowns           = committed.converged_solution;
+      postprocessors.load(checkpoint.postprocessors);
     }
   } // namespace problem
 } // namespace deepdraw

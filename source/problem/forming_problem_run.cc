@@ -1,13 +1,15 @@
-// The increment loop of FormingProblem (doc/architecture.md, "Data flow of
-// a run"): load stepping with cut-backs, the checks that no tool passed
-// through the sheet, output after each converged increment, checkpoints and
-// the clean stop on a signal (doc/user_guide.md §6).
+// The run of FormingProblem (doc/architecture.md, "Data flow of a run"):
+// the stages one after the other, and in each the load stepping with
+// cut-backs, the checks that no tool passed through the sheet, the
+// post-processors after each converged increment, checkpoints and the
+// clean stop on a signal (doc/user_guide.md §6).
 #include <algorithm>
 #include <cmath>
-#include <deal.II/base/timer.h>
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/problem/forming_problem.h>
+#include <deepdraw/state/checkpoint.h>
 #include <deepdraw/state/stop_request.h>
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -48,118 +50,140 @@ namespace deepdraw
     } // namespace
 
 
-    std::vector<double>
-    FormingProblem::landing_loads() const
-    {
-      std::vector<double> loads;
-      if (output_parameters.output_interval > 0.)
-        for (double load = output_parameters.output_interval;
-             load < increment_parameters.final_load;
-             load += output_parameters.output_interval)
-          loads.push_back(load);
-      // The thickness profiles are computed at their travels, not
-      // interpolated (D6).
-      loads.insert(loads.end(), profile_travels.begin(), profile_travels.end());
-      return loads;
-    }
-
-
     void
     FormingProblem::start_run(const RunOptions &options)
     {
       if (options.resume)
         restore_checkpoint();
-      else if (contact.active())
+      else if (contact_coupling.active())
       {
-        contact.start_increment(0., 0.);
+        contact_coupling.start_increment(0., 0.);
         // Tool placement, contact fields and states of the initial state;
         // a tool inside the blank or turned away from it is an input error
         // (D56), found before anything is written.
-        assemble(newton_unknowns, homogeneous_constraints, false);
-        contact.check_initial_placement(triangulation.get_vertices(),
-                                        geometry.thickness);
+        assemble(newton_unknowns, constraints.homogeneous(), false);
+        contact_coupling.check_initial_placement(
+          discretisation.triangulation().get_vertices(),
+          parameters.geometry.thickness);
         const unsigned int penetrating
-          = contact.n_initial_penetrations(triangulation.get_vertices());
+          = contact_coupling.n_initial_penetrations(
+            discretisation.triangulation().get_vertices());
         if (penetrating > 0 && !options.quiet)
           std::cout << "deepdraw: " << penetrating
                     << " sheet nodes start inside a tool; the first "
                        "increment pushes them out"
                     << std::endl;
-        contact.commit(newton_unknowns);
-        state.contact = contact.committed_history();
+        contact_coupling.commit(newton_unknowns);
+        committed.contact = contact_coupling.committed_history();
       }
+      // A failure to open the outputs is an input error (exit code 2, D11),
+      // after which nothing may be left behind: a directory made here is
+      // removed again.
+      const std::string &directory = parameters.output.output_directory;
+      const bool         existed   = std::filesystem::exists(directory);
       try
       {
-        open_output_files(options.resume);
-      }
-      catch (const InputError &)
-      {
-        throw;
+        std::filesystem::create_directories(directory);
+        postprocessors.start(*this, options.resume);
+        newton_log.open(directory, options.resume);
+        adaptation->open(directory, options.resume);
       }
       catch (const std::exception &error)
       {
+        if (!existed)
+        {
+          std::error_code ignored;
+          std::filesystem::remove_all(directory, ignored);
+        }
+        if (dynamic_cast<const InputError *>(&error) != nullptr)
+          throw;
         throw InputError("Output/Output directory: cannot write results to '"
-                         + output_parameters.output_directory
-                         + "': " + error.what());
+                         + directory + "': " + error.what());
       }
       if (!options.resume)
-        write_vtu(0.);
-      committed_table_sizes
-        = state::csv_table_sizes(output_parameters.output_directory);
+        postprocessors.execute(*this);
+      table_sizes = state::csv_table_sizes(directory);
     }
 
 
     void
     FormingProblem::run(const RunOptions &options)
     {
-      Timer run_timer;
+      RunProgress run;
+      run.quiet = options.quiet;
       start_run(options);
+      run.first_load = committed.load;
       if (!options.quiet)
-        std::cout << "deepdraw: " << triangulation.n_active_cells()
-                  << " cells, " << dof_handler.n_dofs()
+        std::cout << "deepdraw: "
+                  << discretisation.triangulation().n_active_cells()
+                  << " cells, " << discretisation.n_displacement_dofs()
                   << " displacement unknowns, "
-                  << newton_unknowns.size() - dof_handler.n_dofs()
+                  << newton_unknowns.size()
+                       - discretisation.n_displacement_dofs()
                   << " contact unknowns, "
-                  << fe::to_string(element_parameters.technology) << " element"
+                  << fe::to_string(parameters.element.technology) << " element"
                   << (options.resume
-                        ? ", resumed at load " + format_load(state.load)
+                        ? ", resumed at load " + format_load(committed.load)
                         : std::string())
                   << std::endl;
+      while (true)
+      {
+        if (!committed.stage_completed)
+        {
+          run_stage(run);
+          end_stage();
+        }
+        if (committed.stage + 1 >= parameters.stages.size())
+          break;
+        begin_stage(committed.stage + 1);
+        if (!options.quiet)
+          std::cout << "deepdraw: stage " << committed.stage + 1 << " '"
+                    << stage().name << "' (" << process::to_string(stage().kind)
+                    << ") from load " << format_load(stage().start_load)
+                    << " to " << format_load(stage().end_load) << std::endl;
+      }
+      std::cout << "deepdraw: finished at load " << format_load(committed.load)
+                << " after " << committed.increment_number << " increments in "
+                << format_seconds(wall_timer.wall_time()) << "; results in "
+                << parameters.output.output_directory << std::endl;
+    }
 
-      const std::vector<double> landings = landing_loads();
-      solver::IncrementControl  control(increment_parameters, landings);
-      if (options.resume)
-        control.restore({state.load, state.next_increment});
-      const double first_load = control.current_load();
 
+    void
+    FormingProblem::run_stage(const RunProgress &run)
+    {
+      std::vector<double> landings;
+      for (const double load : postprocessors.requested_loads(*this))
+        if (load > stage().start_load && load < stage().end_load)
+          landings.push_back(load);
+      solver::IncrementControl control(stage().load_stepping, landings);
+      control.restore({committed.load, committed.next_increment});
       // The times of an increment include its failed attempts (cut-backs):
       // they are reset only once it has converged.
-      assembly_time             = 0.;
-      solve_time                = 0.;
-      double search_time_before = contact.search_time();
-      Timer  increment_timer;
+      progress.assembly_time = progress.solve_time = 0.;
+      double search_time_before = contact_coupling.search_time();
+      increment_timer.restart();
       while (!control.finished())
       {
         if (const int signal_number = state::requested_stop_signal())
           stop_cleanly("stopped by " + state::signal_name(signal_number));
 
-        const double     old_load   = control.current_load();
-        const double     new_load   = old_load + control.next_increment();
-        unsigned int     iterations = 0;
-        std::string      reason;
-        IncrementOutcome outcome
-          = solve_checked_increment(old_load, new_load, iterations, reason);
-        if (outcome != IncrementOutcome::converged)
+        const double old_load   = control.current_load();
+        const double new_load   = old_load + control.next_increment();
+        unsigned int iterations = 0;
+        std::string  reason;
+        if (solve_checked_increment(old_load, new_load, iterations, reason)
+            != IncrementOutcome::converged)
         {
-          if (!options.quiet)
+          if (!run.quiet)
             std::cout << "  load " << format_load(new_load) << ": " << reason
                       << ", cutting the increment back" << std::endl;
-          trial_history             = state.history;
-          trial_enhanced_parameters = state.enhanced_parameters;
+          trial_history             = committed.history;
+          trial_enhanced_parameters = committed.enhanced_parameters;
           if (!control.cut_back())
           {
             const bool too_small = control.next_increment()
-                                   < increment_parameters.minimum_increment;
+                                   < stage().load_stepping.minimum_increment;
             stop_cleanly(
               "the increment from load " + format_load(old_load) + " to "
               + format_load(new_load) + " failed (" + reason + ") after "
@@ -175,58 +199,49 @@ namespace deepdraw
         const unsigned int cut_backs = control.cut_backs_of_current_increment();
         control.accept(iterations);
         commit_increment();
-        ++state.increment_number;
-        state.next_increment = control.state().increment;
+        ++committed.increment_number;
+        committed.next_increment = control.state().increment;
+        report.search_time
+          = contact_coupling.search_time() - search_time_before;
+        at_stage_end = control.finished();
+        at_landing   = at_stage_end || is_landing(landings, new_load);
+        report_increment(new_load - old_load, iterations, cut_backs, run);
 
-        Timer output_timer;
-        if (output_parameters.output_interval <= 0. || control.finished()
-            || is_landing(landings, new_load))
-          write_vtu(new_load);
-        write_increment_tables(new_load);
-        const IncrementRecord record{new_load - old_load,
-                                     iterations,
-                                     cut_backs,
-                                     output_timer.wall_time(),
-                                     contact.search_time() - search_time_before,
-                                     increment_timer.wall_time()};
-        write_statistics_row(record);
-        if (!options.quiet)
-        {
-          // Remaining time: the load still to go at the mean rate of this
-          // run so far.
-          const double elapsed = run_timer.wall_time();
-          const double done    = state.load - first_load;
-          const double remaining
-            = done > 0. ? elapsed / done
-                            * (increment_parameters.final_load - state.load)
-                        : 0.;
-          print_increment_line(record, elapsed, remaining);
-        }
         // Adaptive refinement and re-equilibration at this load (D80).
-        const std::size_t refinements = refinement_history.size();
-        if (!adapt_mesh(control.finished(), reason))
+        const bool last = control.finished()
+                          && committed.stage + 1 == parameters.stages.size();
+        const std::size_t refinements = adaptation->records().size();
+        if (!adapt_mesh(last, reason))
           stop_cleanly("the re-equilibration after refining the mesh at load "
-                       + format_load(state.load) + " failed (" + reason + ")");
-        if (!options.quiet && refinement_history.size() > refinements)
-          std::cout << "  refined to " << triangulation.n_active_cells()
+                       + format_load(committed.load) + " failed (" + reason
+                       + ")");
+        if (!run.quiet && adaptation->records().size() > refinements)
+          std::cout << "  refined to "
+                    << discretisation.triangulation().n_active_cells()
                     << " cells, re-equilibrated in "
-                    << refinement_history.back().iterations << " iteration(s)"
-                    << std::endl;
-        committed_table_sizes
-          = state::csv_table_sizes(output_parameters.output_directory);
-        if (checkpoint_parameters.interval > 0
-            && state.increment_number % checkpoint_parameters.interval == 0)
+                    << adaptation->records().back().iterations
+                    << " iteration(s)" << std::endl;
+        table_sizes
+          = state::csv_table_sizes(parameters.output.output_directory);
+        if (parameters.checkpoint.interval > 0
+            && committed.increment_number % parameters.checkpoint.interval == 0)
           save_checkpoint();
-        assembly_time      = 0.;
-        solve_time         = 0.;
-        search_time_before = contact.search_time();
+        progress.assembly_time = progress.solve_time = 0.;
+        search_time_before = contact_coupling.search_time();
         increment_timer.restart();
       }
-      std::cout << "deepdraw: finished at load "
-                << format_load(control.current_load()) << " after "
-                << state.increment_number << " increments in "
-                << format_seconds(wall_timer.wall_time()) << "; results in "
-                << output_parameters.output_directory << std::endl;
+    }
+
+
+    void
+    FormingProblem::end_stage()
+    {
+      postprocessors.end_stage(*this);
+      committed.stage_completed = true;
+      table_sizes = state::csv_table_sizes(parameters.output.output_directory);
+      // A later run can begin the next stage from here (D101).
+      if (committed.stage + 1 < parameters.stages.size())
+        save_checkpoint();
     }
 
 
@@ -238,29 +253,83 @@ namespace deepdraw
     {
       // A tool that moves farther than the search distance in one
       // increment can pass through the sheet unseen (D56).
-      reason = contact.active() ? contact.check_tool_motion(old_load, new_load)
-                                : std::string();
+      reason = contact_coupling.active()
+                 ? contact_coupling.check_tool_motion(old_load, new_load)
+                 : std::string();
       if (!reason.empty())
         return IncrementOutcome::diverged;
       const IncrementOutcome outcome
         = solve_increment(old_load, new_load, iterations);
       reason = solver::describe(outcome);
-      if (outcome != IncrementOutcome::converged || !contact.active())
+      if (outcome != IncrementOutcome::converged || !contact_coupling.active())
         return outcome;
-      reason = contact.check_tool_sides(triangulation.get_vertices(),
-                                        newton_unknowns,
-                                        geometry.thickness);
+      reason = contact_coupling.check_tool_sides(
+        discretisation.triangulation().get_vertices(),
+        newton_unknowns,
+        parameters.geometry.thickness);
       if (reason.empty())
-        reason = contact.check_tool_motion(old_load, new_load, newton_unknowns);
+        reason = contact_coupling.check_tool_motion(old_load,
+                                                    new_load,
+                                                    newton_unknowns);
       return reason.empty() ? outcome : IncrementOutcome::diverged;
+    }
+
+
+    void
+    FormingProblem::report_increment(const double       load_increment,
+                                     const unsigned int iterations,
+                                     const unsigned int cut_backs,
+                                     const RunProgress &run)
+    {
+      const solver::LinearSolver::Statistics solver_statistics
+        = linear_system->statistics();
+      report.load_increment      = load_increment;
+      report.iterations          = iterations;
+      report.cut_backs           = cut_backs;
+      report.force_residual      = progress.last_force_residual();
+      report.contact_residual    = progress.last_contact_residual();
+      report.plastic_points      = progress.plastic_points;
+      report.contact_changes     = progress.contact_changes;
+      report.assembly_time       = progress.assembly_time;
+      report.solve_time          = progress.solve_time;
+      report.factorized_unknowns = solver_statistics.factorized_unknowns;
+      report.symbolic_analyses   = solver_statistics.symbolic_analyses
+                                 - reported_solver_statistics.symbolic_analyses;
+      reported_solver_statistics = solver_statistics;
+      postprocessors.execute(*this);
+      if (run.quiet)
+        return;
+
+      // Remaining time: the load still to go at the mean rate of this run
+      // so far.
+      const double elapsed = run.timer.wall_time();
+      const double done    = committed.load - run.first_load;
+      const double remaining
+        = done > 0. ? elapsed / done * (final_load() - committed.load) : 0.;
+      std::ostringstream line;
+      line << "increment " << std::setw(4) << committed.increment_number
+           << "  load " << std::setw(9) << format_load(committed.load)
+           << "  iterations " << std::setw(2) << iterations << "  cut-backs "
+           << cut_backs << std::scientific << std::setprecision(2)
+           << "  residuals " << report.force_residual << " "
+           << report.contact_residual << std::defaultfloat
+           << "  plastic points " << report.plastic_points;
+      if (contact_coupling.active())
+        line << "  stick/slip " << contact_coupling.n_stick() << "/"
+             << contact_coupling.n_slip();
+      line << std::fixed << std::setprecision(3) << "  time "
+           << increment_wall_time() << " s  elapsed " << format_seconds(elapsed)
+           << "  remaining ~" << format_seconds(remaining);
+      std::cout << line.str() << std::endl;
     }
 
 
     void
     FormingProblem::stop_cleanly(const std::string &reason)
     {
-      std::string where = "; the results up to load " + format_load(state.load)
-                          + " are in " + output_parameters.output_directory;
+      std::string where = "; the results up to load "
+                          + format_load(committed.load) + " are in "
+                          + parameters.output.output_directory;
       try
       {
         save_checkpoint();
@@ -271,66 +340,6 @@ namespace deepdraw
         where += " (no checkpoint: " + std::string(error.what()) + ")";
       }
       throw RunFailure(reason + where);
-    }
-
-
-    void
-    FormingProblem::write_statistics_row(const IncrementRecord &record)
-    {
-      const double force_residual
-        = residual_history.empty() ? 0. : residual_history.back();
-      const double contact_residual = contact_residual_history.empty()
-                                        ? 0.
-                                        : contact_residual_history.back();
-      const solver::LinearSolver::Statistics solver_statistics
-        = linear_solver->statistics();
-      statistics_file.add_row(
-        {double(state.increment_number),
-         state.load,
-         record.load_increment,
-         double(record.iterations),
-         double(record.cut_backs),
-         force_residual,
-         contact_residual,
-         double(n_plastic_points),
-         double(contact_changes),
-         double(contact.n_stick()),
-         double(contact.n_slip()),
-         assembly_time,
-         record.search_time,
-         solve_time,
-         record.output_time,
-         record.wall_time,
-         sheet_volume(),
-         double(solver_statistics.factorized_unknowns),
-         double(solver_statistics.symbolic_analyses
-                - reported_solver_statistics.symbolic_analyses)});
-      reported_solver_statistics = solver_statistics;
-    }
-
-
-    void
-    FormingProblem::print_increment_line(const IncrementRecord &record,
-                                         const double           elapsed,
-                                         const double           remaining) const
-    {
-      std::ostringstream line;
-      line << "increment " << std::setw(4) << state.increment_number
-           << "  load " << std::setw(9) << format_load(state.load)
-           << "  iterations " << std::setw(2) << record.iterations
-           << "  cut-backs " << record.cut_backs << std::scientific
-           << std::setprecision(2) << "  residuals "
-           << (residual_history.empty() ? 0. : residual_history.back()) << " "
-           << (contact_residual_history.empty()
-                 ? 0.
-                 : contact_residual_history.back())
-           << std::defaultfloat << "  plastic points " << n_plastic_points;
-      if (contact.active())
-        line << "  stick/slip " << contact.n_stick() << "/" << contact.n_slip();
-      line << std::fixed << std::setprecision(3) << "  time "
-           << record.wall_time << " s  elapsed " << format_seconds(elapsed)
-           << "  remaining ~" << format_seconds(remaining);
-      std::cout << line.str() << std::endl;
     }
   } // namespace problem
 } // namespace deepdraw

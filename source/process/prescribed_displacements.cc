@@ -41,9 +41,21 @@ namespace deepdraw
       prm.enter_subsection("Boundary conditions");
       const std::string text = prm.get("Prescribed displacements");
       prm.leave_subsection();
+      parse(text,
+            symmetry_plane_x,
+            symmetry_plane_y,
+            "Boundary conditions/Prescribed displacements");
+    }
 
-      const std::string parameter
-        = "Boundary conditions/Prescribed displacements";
+
+    void
+    PrescribedDisplacements::parse(const std::string &text,
+                                   const bool         symmetry_plane_x,
+                                   const bool         symmetry_plane_y,
+                                   const std::string &parameter_name)
+    {
+      parameter = parameter_name;
+      entries.clear();
       std::vector<std::string> items;
       if (symmetry_plane_x)
         items.emplace_back("xmin: ux = 0");
@@ -178,8 +190,7 @@ namespace deepdraw
               if (!(std::abs(value) <= bound))
               {
                 std::ostringstream text;
-                text << std::setprecision(6)
-                     << "Boundary conditions/Prescribed displacements: '"
+                text << std::setprecision(6) << parameter << ": '"
                      << io::one_line(entry.item) << "' gives " << value
                      << " at " << describe_point(X, load)
                      << "; allowed are finite displacements up to " << bound
@@ -205,10 +216,9 @@ namespace deepdraw
       // code 3, doc/user_guide.md §5): cutting the increment back cannot
       // step around a boundary condition that has no value at this load.
       if (!std::isfinite(value))
-        throw std::runtime_error(
-          "Boundary conditions/Prescribed displacements: '"
-          + io::one_line(entry.item) + "' is not finite at "
-          + describe_point(X, load));
+        throw std::runtime_error(parameter + ": '" + io::one_line(entry.item)
+                                 + "' is not finite at "
+                                 + describe_point(X, load));
       return value;
     }
   } // namespace process

@@ -5,7 +5,8 @@ namespace deepdraw
   namespace process
   {
     void
-    ProcessParameters::declare_parameters(ParameterHandler &prm)
+    ProcessParameters::declare_parameters(ParameterHandler  &prm,
+                                          const unsigned int n_tool_slots)
     {
       prm.enter_subsection("Process");
       prm.declare_entry("Final load",
@@ -27,6 +28,7 @@ namespace deepdraw
                         "sheet along its Force direction, an expression of "
                         "the load t (N). For the quarter model of the "
                         "square cup it is the force on the quarter.");
+      declare_stage_parameters(prm, n_tool_slots);
       prm.leave_subsection();
     }
 

@@ -1,53 +1,118 @@
 #include <algorithm>
 #include <cmath>
+#include <deal.II/base/utilities.h>
 #include <deepdraw/io/input_error.h>
+#include <deepdraw/io/printable_text.h>
 #include <deepdraw/solver/increment_control.h>
+#include <memory>
 
 namespace deepdraw
 {
   namespace solver
   {
+    namespace
+    {
+      // The entries of subsection Load stepping, with what each sets: one
+      // table serves the declaration, the parsing and a stage's overrides.
+      struct Entry
+      {
+        const char *name;
+        const char *default_value;
+        double      low, high;
+        bool        integer;
+        const char *description;
+      };
+
+      const Entry entries[] = {
+        {"Initial increment",
+         "0.1",
+         0.,
+         1e6,
+         false,
+         "First increment of the load parameter (0 < value <= 1e6)."},
+        {"Minimum increment",
+         "1e-6",
+         0.,
+         1e6,
+         false,
+         "The run stops with an error if a cut-back would make the "
+         "increment smaller than this (0 to Initial increment)."},
+        {"Maximum increment",
+         "0.1",
+         0.,
+         1e6,
+         false,
+         "Upper bound of the increment after regrowth (0 < value <= 1e6)."},
+        {"Cut-back factor",
+         "0.5",
+         0.01,
+         0.99,
+         false,
+         "Factor applied to the increment after a failed attempt."},
+        {"Growth factor",
+         "1.5",
+         1.,
+         10.,
+         false,
+         "Factor applied to the increment after an easy increment (see Easy "
+         "increment iterations; 1 to 10)."},
+        {"Easy increment iterations",
+         "4",
+         1,
+         1000,
+         true,
+         "An increment that converged in at most this many Newton iterations "
+         "counts as easy."},
+        {"Maximum cut-backs",
+         "12",
+         0,
+         100,
+         true,
+         "Cut-backs allowed for one increment before the run stops (0 to "
+         "100)."}};
+
+      std::unique_ptr<Patterns::PatternBase>
+      pattern(const Entry &entry)
+      {
+        if (entry.integer)
+          return std::make_unique<Patterns::Integer>(int(entry.low),
+                                                     int(entry.high));
+        return std::make_unique<Patterns::Double>(entry.low, entry.high);
+      }
+
+      void
+      set_value(IncrementControlParameters &parameters,
+                const std::string          &name,
+                const std::string          &value)
+      {
+        const double number = Utilities::string_to_double(value);
+        if (name == "Initial increment")
+          parameters.initial_increment = number;
+        else if (name == "Minimum increment")
+          parameters.minimum_increment = number;
+        else if (name == "Maximum increment")
+          parameters.maximum_increment = number;
+        else if (name == "Cut-back factor")
+          parameters.cut_back_factor = number;
+        else if (name == "Growth factor")
+          parameters.growth_factor = number;
+        else if (name == "Easy increment iterations")
+          parameters.easy_iterations = Utilities::string_to_int(value);
+        else
+          parameters.maximum_cut_backs = Utilities::string_to_int(value);
+      }
+    } // namespace
+
+
     void
     IncrementControlParameters::declare_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Load stepping");
-      prm.declare_entry("Initial increment",
-                        "0.1",
-                        Patterns::Double(0., 1e6),
-                        "First increment of the load parameter (0 < value "
-                        "<= 1e6).");
-      prm.declare_entry("Minimum increment",
-                        "1e-6",
-                        Patterns::Double(0., 1e6),
-                        "The run stops with an error if a cut-back would "
-                        "make the increment smaller than this (0 to Initial "
-                        "increment).");
-      prm.declare_entry("Maximum increment",
-                        "0.1",
-                        Patterns::Double(0., 1e6),
-                        "Upper bound of the increment after regrowth (0 < "
-                        "value <= 1e6).");
-      prm.declare_entry("Cut-back factor",
-                        "0.5",
-                        Patterns::Double(0.01, 0.99),
-                        "Factor applied to the increment after a failed "
-                        "attempt.");
-      prm.declare_entry("Growth factor",
-                        "1.5",
-                        Patterns::Double(1., 10.),
-                        "Factor applied to the increment after an easy "
-                        "increment (see Easy increment iterations; 1 to "
-                        "10).");
-      prm.declare_entry("Easy increment iterations",
-                        "4",
-                        Patterns::Integer(1, 1000),
-                        "An increment that converged in at most this many "
-                        "Newton iterations counts as easy.");
-      prm.declare_entry("Maximum cut-backs",
-                        "12",
-                        Patterns::Integer(0, 100),
-                        "Cut-backs allowed for one increment before the run "
-                        "stops (0 to 100).");
+      for (const Entry &entry : entries)
+        prm.declare_entry(entry.name,
+                          entry.default_value,
+                          *pattern(entry),
+                          entry.description);
       prm.leave_subsection();
     }
 
@@ -56,22 +121,73 @@ namespace deepdraw
     IncrementControlParameters::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Load stepping");
-      initial_increment = prm.get_double("Initial increment");
-      minimum_increment = prm.get_double("Minimum increment");
-      maximum_increment = prm.get_double("Maximum increment");
-      cut_back_factor   = prm.get_double("Cut-back factor");
-      growth_factor     = prm.get_double("Growth factor");
-      easy_iterations   = prm.get_integer("Easy increment iterations");
-      maximum_cut_backs = prm.get_integer("Maximum cut-backs");
+      for (const Entry &entry : entries)
+        set_value(*this, entry.name, prm.get(entry.name));
       prm.leave_subsection();
+      check("Load stepping/");
+    }
 
+
+    void
+    IncrementControlParameters::declare_overrides(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Load stepping");
+      for (const Entry &entry : entries)
+        prm.declare_entry(entry.name,
+                          "",
+                          Patterns::Anything(),
+                          std::string("Empty: as Load stepping/") + entry.name
+                            + "; otherwise this stage's value. "
+                            + entry.description);
+      prm.leave_subsection();
+    }
+
+
+    void
+    IncrementControlParameters::parse_overrides(ParameterHandler  &prm,
+                                                const std::string &prefix)
+    {
+      prm.enter_subsection("Load stepping");
+      for (const Entry &entry : entries)
+      {
+        const std::string value = Utilities::trim(prm.get(entry.name));
+        if (value.empty())
+          continue;
+        const auto allowed = pattern(entry);
+        if (!allowed->match(value))
+          throw InputError(prefix + "Load stepping/" + entry.name + " = '"
+                           + io::one_line(value) + "': allowed are "
+                           + allowed->description() + ", or empty");
+        set_value(*this, entry.name, value);
+      }
+      prm.leave_subsection();
+      check(prefix + "Load stepping/");
+    }
+
+
+    std::string
+    IncrementControlParameters::first_override(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Load stepping");
+      std::string name;
+      for (const Entry &entry : entries)
+        if (name.empty() && !Utilities::trim(prm.get(entry.name)).empty())
+          name = entry.name;
+      prm.leave_subsection();
+      return name;
+    }
+
+
+    void
+    IncrementControlParameters::check(const std::string &prefix) const
+    {
       if (!(initial_increment > 0.))
-        throw InputError("Load stepping/Initial increment must be > 0");
+        throw InputError(prefix + "Initial increment must be > 0");
       if (!(maximum_increment > 0.))
-        throw InputError("Load stepping/Maximum increment must be > 0");
+        throw InputError(prefix + "Maximum increment must be > 0");
       if (minimum_increment > initial_increment)
-        throw InputError("Load stepping/Minimum increment must not exceed "
-                         "Load stepping/Initial increment");
+        throw InputError(prefix + "Minimum increment must not exceed " + prefix
+                         + "Initial increment");
     }
 
 

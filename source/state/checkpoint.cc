@@ -1,6 +1,8 @@
 #include <algorithm>
+#include <cstdlib>
 #include <deepdraw/io/binary_stream.h>
 #include <deepdraw/io/input_error.h>
+#include <deepdraw/io/pvd_record.h>
 #include <deepdraw/state/checkpoint.h>
 #include <filesystem>
 #include <fstream>
@@ -13,7 +15,12 @@ namespace deepdraw
   {
     namespace
     {
-      constexpr char tag[] = "deepdraw-checkpoint-1";
+      constexpr char tag[] = "deepdraw-checkpoint-2";
+      // Before stages and post-processors (D101): the output progress was
+      // the VTU counter and the PVD steps, now the "visualization"
+      // post-processor's data, then the table sizes.
+      constexpr char tag_before_stages[] = "deepdraw-checkpoint-1";
+      static_assert(sizeof(tag) == sizeof(tag_before_stages));
 
       constexpr char source[] = "the file";
 
@@ -32,67 +39,49 @@ namespace deepdraw
       }
 
       void
-      put_string(std::ostream &stream, const std::string &text)
+      write_table_sizes(
+        std::ostream                                              &stream,
+        const std::vector<std::pair<std::string, std::uintmax_t>> &sizes)
       {
-        put(stream, text.size());
-        stream.write(text.data(), text.size());
-      }
-
-      std::string
-      get_string(std::istream &stream)
-      {
-        std::size_t n = 0;
-        get(stream, n);
-        if (n > (std::size_t(1) << 32))
-          throw std::runtime_error("a text block is too long");
-        std::string text(n, '\0');
-        io::read_bytes(stream, text.data(), n, source);
-        return text;
-      }
-
-      void
-      write_output_progress(std::ostream &stream, const OutputProgress &output)
-      {
-        put(stream, output.output_step);
-        put(stream, output.pvd_entries.size());
-        for (const io::PvdRecord::Entry &entry : output.pvd_entries)
+        put(stream, sizes.size());
+        for (const auto &[name, size] : sizes)
         {
-          put(stream, entry.time);
-          put(stream, entry.part);
-          put_string(stream, entry.file);
-        }
-        put(stream, output.table_sizes.size());
-        for (const auto &[name, size] : output.table_sizes)
-        {
-          put_string(stream, name);
+          io::write_string(stream, name);
           put(stream, size);
         }
       }
 
-      OutputProgress
-      read_output_progress(std::istream &stream)
+      std::vector<std::pair<std::string, std::uintmax_t>>
+      read_table_sizes(std::istream &stream)
       {
-        OutputProgress output;
-        get(stream, output.output_step);
-        std::size_t n = 0;
+        std::vector<std::pair<std::string, std::uintmax_t>> sizes;
+        std::size_t                                         n = 0;
         get(stream, n);
         for (std::size_t i = 0; i < n && stream; ++i)
         {
-          io::PvdRecord::Entry entry;
-          get(stream, entry.time);
-          get(stream, entry.part);
-          entry.file = get_string(stream);
-          output.pvd_entries.push_back(entry);
-        }
-        get(stream, n);
-        for (std::size_t i = 0; i < n && stream; ++i)
-        {
-          std::string    name = get_string(stream);
+          std::string    name = io::read_string(stream, source);
           std::uintmax_t size = 0;
           get(stream, size);
-          output.table_sizes.emplace_back(name, size);
+          sizes.emplace_back(name, size);
         }
-        return output;
+        return sizes;
+      }
+
+      // The output progress of a checkpoint before stages: the VTU counter
+      // and the PVD steps (the "visualization" post-processor's data, in
+      // its format), then the table sizes.
+      void
+      read_output_progress(std::istream &stream, Checkpoint &checkpoint)
+      {
+        unsigned int output_step = 0;
+        get(stream, output_step);
+        const std::vector<io::PvdRecord::Entry> entries
+          = io::read_entries(stream, source);
+        std::ostringstream visualization;
+        io::write_value(visualization, output_step);
+        io::write_entries(visualization, entries);
+        checkpoint.postprocessors["visualization"] = visualization.str();
+        checkpoint.table_sizes                     = read_table_sizes(stream);
       }
 
       // "Subsection/Name" -> value, from a flatten_parameters() listing.
@@ -111,10 +100,15 @@ namespace deepdraw
         return values;
       }
 
-      // Parameters a resumed run may change (D55).
+      // Parameters a resumed run may change (D55), and those of the stages
+      // after the checkpoint's (D101).
       bool
-      may_change_on_resume(const std::string &name)
+      may_change_on_resume(const std::string &name, const unsigned int stage)
       {
+        const std::string stage_slot = "Process/Stage ";
+        if (name.rfind(stage_slot, 0) == 0
+            && std::atoi(name.c_str() + stage_slot.size()) > int(stage) + 1)
+          return true;
         return name.rfind("Output/", 0) == 0
                || name.rfind("Checkpoint/", 0) == 0
                || name == "Process/Final load"
@@ -166,18 +160,21 @@ namespace deepdraw
 
 
     void
-    write_checkpoint(const std::string     &filename,
-                     const std::string     &parameters,
-                     const SimulationState &state,
-                     const OutputProgress  &output)
+    write_checkpoint(const std::string &filename, const Checkpoint &checkpoint)
     {
       const std::string temporary = filename + ".tmp";
       {
         std::ofstream stream(temporary, std::ios::binary);
         stream.write(tag, sizeof(tag));
-        put_string(stream, parameters);
-        state.write(stream);
-        write_output_progress(stream, output);
+        io::write_string(stream, checkpoint.parameters);
+        checkpoint.state.write(stream);
+        write_table_sizes(stream, checkpoint.table_sizes);
+        put(stream, checkpoint.postprocessors.size());
+        for (const auto &[name, data] : checkpoint.postprocessors)
+        {
+          io::write_string(stream, name);
+          io::write_string(stream, data);
+        }
         stream.flush();
         if (!stream)
         {
@@ -200,17 +197,32 @@ namespace deepdraw
       if (!stream)
         throw InputError("--resume: there is no checkpoint " + filename
                          + " (checkpoints are written every Checkpoint/"
-                           "Interval increments and at a clean stop)");
+                           "Interval increments, at the end of every stage "
+                           "but the last, and at a clean stop)");
       Checkpoint checkpoint;
       try
       {
         char read_tag[sizeof(tag)] = {};
         stream.read(read_tag, sizeof(tag));
-        if (!stream || std::string(read_tag) != tag)
+        const bool before_stages
+          = stream && std::string(read_tag) == tag_before_stages;
+        if (!stream || (std::string(read_tag) != tag && !before_stages))
           throw std::runtime_error("not a deepdraw checkpoint");
-        checkpoint.parameters = get_string(stream);
+        checkpoint.parameters = io::read_string(stream, source);
         checkpoint.state.read(stream);
-        checkpoint.output = read_output_progress(stream);
+        if (before_stages)
+          read_output_progress(stream, checkpoint);
+        else
+        {
+          checkpoint.table_sizes = read_table_sizes(stream);
+          std::size_t n          = 0;
+          get(stream, n);
+          for (std::size_t i = 0; i < n && stream; ++i)
+          {
+            const std::string name          = io::read_string(stream, source);
+            checkpoint.postprocessors[name] = io::read_string(stream, source);
+          }
+        }
       }
       catch (const std::runtime_error &error)
       {
@@ -256,23 +268,33 @@ namespace deepdraw
 
     std::vector<std::string>
     changed_model_parameters(const std::string &checkpointed,
-                             const std::string &current)
+                             const std::string &current,
+                             const std::string &defaults,
+                             const unsigned int stage)
     {
-      const auto               old_values = parse_listing(checkpointed);
-      const auto               new_values = parse_listing(current);
+      const auto               old_values     = parse_listing(checkpointed);
+      const auto               new_values     = parse_listing(current);
+      const auto               default_values = parse_listing(defaults);
       std::vector<std::string> changes;
       for (const auto &[name, value] : new_values)
       {
-        if (may_change_on_resume(name))
+        if (may_change_on_resume(name, stage))
           continue;
-        const auto old = old_values.find(name);
+        const auto old           = old_values.find(name);
+        const auto default_value = default_values.find(name);
         if (old == old_values.end())
-          changes.push_back(name + ": not in the checkpoint");
+        {
+          // A parameter younger than the checkpoint, at its default: the
+          // model as it was.
+          if (default_value == default_values.end()
+              || default_value->second != value)
+            changes.push_back(name + ": not in the checkpoint");
+        }
         else if (old->second != value)
           changes.push_back(name + ": " + old->second + " -> " + value);
       }
       for (const auto &[name, value] : old_values)
-        if (!may_change_on_resume(name) && new_values.count(name) == 0)
+        if (!may_change_on_resume(name, stage) && new_values.count(name) == 0)
           changes.push_back(name + ": no longer a parameter");
       return changes;
     }

@@ -13,7 +13,10 @@ namespace deepdraw
     {
       // A plain binary image in this machine's byte order, with a tag and
       // counts, so that a truncated or foreign stream is detected.
-      constexpr char tag[] = "deepdraw-state-3";
+      constexpr char tag[] = "deepdraw-state-4";
+      // Written before stages existed: no stage, no tool origins (D101).
+      constexpr char tag_without_stages[] = "deepdraw-state-3";
+      static_assert(sizeof(tag) == sizeof(tag_without_stages));
 
       constexpr char source[] = "simulation state: the stream";
 
@@ -150,6 +153,11 @@ namespace deepdraw
         stream.write(reinterpret_cast<const char *>(cycle.data()),
                      cycle.size() * sizeof(cycle[0]));
       }
+      put(stream, stage);
+      put(stream, static_cast<unsigned char>(stage_completed ? 1 : 0));
+      for (const auto *values :
+           {&contact.tool_origin, &contact.tool_translation})
+        put_doubles(stream, values->data(), values->size());
       if (!stream)
         throw std::runtime_error("simulation state: writing failed");
     }
@@ -160,7 +168,9 @@ namespace deepdraw
     {
       char read_tag[sizeof(tag)] = {};
       stream.read(read_tag, sizeof(tag));
-      if (!stream || std::string(read_tag) != tag)
+      const bool with_stages = stream && std::string(read_tag) == tag;
+      if (!with_stages
+          && (!stream || std::string(read_tag) != tag_without_stages))
         throw std::runtime_error("simulation state: not a deepdraw state");
       get(stream, load);
       get(stream, last_load_increment);
@@ -210,6 +220,21 @@ namespace deepdraw
                        cycle.data(),
                        cycle.size() * sizeof(cycle[0]),
                        source);
+      }
+      stage           = 0;
+      stage_completed = false;
+      contact.tool_origin.assign(3 * contact.tool_position.size(), 0.);
+      contact.tool_translation.clear();
+      if (!with_stages)
+        return;
+      get(stream, stage);
+      unsigned char completed = 0;
+      get(stream, completed);
+      stage_completed = completed != 0;
+      for (auto *values : {&contact.tool_origin, &contact.tool_translation})
+      {
+        values->resize(get_count(stream));
+        get_values(stream, values->data(), values->size());
       }
     }
   } // namespace state

@@ -105,10 +105,11 @@ main(int argc, char **argv)
                             record.iterations <= 1);
 
   // Every point against the fixed mesh's (homogeneous) point 0.
-  const fe::QuadraturePointHistory &reference = fixed->get_history()[0];
-  const double                      scale     = reference.state.stress.norm();
-  double stress_error = 0., back_stress_error = 0., strain_error = 0.;
-  for (const auto &point : adaptive->get_history())
+  const fe::QuadraturePointHistory &reference
+    = fixed->access().state().history[0];
+  const double scale        = reference.state.stress.norm();
+  double       stress_error = 0., back_stress_error = 0., strain_error = 0.;
+  for (const auto &point : adaptive->access().state().history)
   {
     stress_error
       = std::max(stress_error,
@@ -135,8 +136,8 @@ main(int argc, char **argv)
                              strain_error,
                              0.,
                              1e-11);
-  const double fixed_force    = fixed->face_reaction(1)[0];
-  const double adaptive_force = adaptive->face_reaction(1)[0];
+  const double fixed_force    = fixed->access().face_reaction(1)[0];
+  const double adaptive_force = adaptive->access().face_reaction(1)[0];
   deepdraw_test::check_relative("reaction on xmax",
                                 adaptive_force,
                                 fixed_force,

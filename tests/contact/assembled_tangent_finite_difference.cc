@@ -70,15 +70,16 @@ main(int argc, char *argv[])
   problem::FormingProblem forming_problem(prm);
   forming_problem.prepare_increment(0., 0.5);
 
-  const types::global_dof_index n_u = forming_problem.n_displacement_dofs();
-  Vector<double>                x(forming_problem.get_newton_unknowns());
+  const types::global_dof_index n_u
+    = forming_problem.access().sheet().n_displacement_dofs();
+  Vector<double> x(forming_problem.access().state().converged_solution);
   const types::global_dof_index n = x.size();
   // A state with pairs in every state: the centre pushed down under the
   // punch, a random wrinkle, random contact forces, the holder pressed in.
   std::mt19937                           random(7);
   std::uniform_real_distribution<double> uniform(-1., 1.);
-  const auto &vertices = forming_problem.get_initial_vertices();
-  const auto &dofs     = forming_problem.get_dof_handler();
+  const auto &vertices = forming_problem.access().sheet().initial_vertices();
+  const auto &dofs     = forming_problem.access().sheet().dof_handler();
   for (const auto &cell : dofs.active_cell_iterators())
     for (const unsigned int v : cell->vertex_indices())
     {
@@ -98,8 +99,8 @@ main(int argc, char *argv[])
                             forming_problem.evaluate_residual(x,
                                                               residual,
                                                               &tangent));
-  const unsigned int stick = forming_problem.get_contact().n_stick();
-  const unsigned int slip  = forming_problem.get_contact().n_slip();
+  const unsigned int stick = forming_problem.access().contact().n_stick();
+  const unsigned int slip  = forming_problem.access().contact().n_slip();
   std::cout << "pairs in stick " << stick << ", in slip " << slip << std::endl;
   deepdraw_test::check_true("some pairs stick and some slip",
                             stick > 0 && slip > 0);
@@ -120,10 +121,11 @@ main(int argc, char *argv[])
     Vector<double> perturbed = x;
     perturbed[j] += h;
     forming_problem.evaluate_residual(perturbed, plus, nullptr);
-    const unsigned int stick_plus = forming_problem.get_contact().n_stick();
+    const unsigned int stick_plus
+      = forming_problem.access().contact().n_stick();
     perturbed[j] -= 2 * h;
     forming_problem.evaluate_residual(perturbed, minus, nullptr);
-    if (stick_plus != forming_problem.get_contact().n_stick()
+    if (stick_plus != forming_problem.access().contact().n_stick()
         || stick_plus != stick)
     {
       ++skipped;

@@ -89,8 +89,8 @@ end
   void
   check_equilibrium(const problem::FormingProblem &problem)
   {
-    const Tensor<1, 3> die_force = problem.get_contact().tool_forces()[0];
-    const Tensor<1, 3> reaction  = problem.face_reaction(5);
+    const Tensor<1, 3> die_force = problem.access().contact().tool_forces()[0];
+    const Tensor<1, 3> reaction  = problem.access().face_reaction(5);
     std::cout << "die force " << die_force << ", zmax reaction " << reaction
               << std::endl;
     check_relative("die Fz vs -(zmax reaction)",
@@ -115,7 +115,7 @@ main(int argc, char *argv[])
     const auto   problem
       = forming_test::run_from_text(prm_text(drag), "block_friction_slip");
     check_equilibrium(*problem);
-    const Tensor<1, 3> die_force = problem->get_contact().tool_forces()[0];
+    const Tensor<1, 3> die_force = problem->access().contact().tool_forces()[0];
     check_relative("die Fx vs -mu Fz (slip, +x)",
                    die_force[0],
                    -mu * die_force[2],
@@ -124,8 +124,8 @@ main(int argc, char *argv[])
     // at second order in the strains (eps^2 ~ 1e-6) with nu = 0.
     check_close("die Fy", die_force[1], 0., 1e-6 * die_force[2]);
 
-    const auto nodal = problem->get_contact().nodal_contact(
-      problem->get_initial_vertices().size());
+    const auto nodal = problem->access().contact().nodal_contact(
+      problem->access().sheet().initial_vertices().size());
     const auto   bottom    = forming_test::vertices_on_plane(*problem, 2, 0.);
     unsigned int n_slip    = 0;
     double       worst_law = 0., min_ux = drag;
@@ -157,11 +157,11 @@ main(int argc, char *argv[])
     const auto   problem
       = forming_test::run_from_text(prm_text(drag), "block_friction_stick");
     check_equilibrium(*problem);
-    const Tensor<1, 3> die_force = problem->get_contact().tool_forces()[0];
+    const Tensor<1, 3> die_force = problem->access().contact().tool_forces()[0];
     check_true("die carries a tangential force (block sheared)",
                std::abs(die_force[0]) > 0.1);
-    const auto nodal = problem->get_contact().nodal_contact(
-      problem->get_initial_vertices().size());
+    const auto nodal = problem->access().contact().nodal_contact(
+      problem->access().sheet().initial_vertices().size());
     const auto   bottom    = forming_test::vertices_on_plane(*problem, 2, 0.);
     unsigned int n_stick   = 0;
     double       max_ratio = 0., max_slip = 0.;

@@ -82,8 +82,8 @@ end
     = forming_test::run_from_text(text, "block_uniform_pressure");
 
   // 1. Equilibrium of the block: die force + top reaction = 0.
-  const Tensor<1, 3> die_force = problem->get_contact().tool_forces()[0];
-  const Tensor<1, 3> reaction  = problem->face_reaction(5);
+  const Tensor<1, 3> die_force = problem->access().contact().tool_forces()[0];
+  const Tensor<1, 3> reaction  = problem->access().face_reaction(5);
   std::cout << "die force " << die_force << ", zmax reaction " << reaction
             << std::endl;
   check_relative("die Fz vs -(zmax reaction)",
@@ -102,10 +102,10 @@ end
                  1e-3);
 
   // 3. and 4. Nodal pressures on the bottom face.
-  const auto nodal = problem->get_contact().nodal_contact(
-    problem->get_initial_vertices().size());
+  const auto nodal = problem->access().contact().nodal_contact(
+    problem->access().sheet().initial_vertices().size());
   const auto   bottom = forming_test::vertices_on_plane(*problem, 2, 0.);
-  const auto  &X      = problem->get_initial_vertices();
+  const auto  &X      = problem->access().sheet().initial_vertices();
   const double p_mean = die_force[2] / (side * side);
   double       max_pressure_error = 0., max_gap = 0., max_friction = 0.;
   unsigned int n_active              = 0;

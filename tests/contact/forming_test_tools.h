@@ -75,7 +75,7 @@ namespace forming_test
                     const double                             value)
   {
     std::vector<unsigned int> result;
-    const auto               &X = problem.get_initial_vertices();
+    const auto               &X = problem.access().sheet().initial_vertices();
     for (unsigned int v = 0; v < X.size(); ++v)
       if (std::abs(X[v][component] - value) < 1e-10)
         result.push_back(v);
@@ -87,8 +87,9 @@ namespace forming_test
   vertex_displacement(const deepdraw::problem::FormingProblem &problem,
                       const unsigned int                       vertex)
   {
-    const auto &u = problem.get_total_displacement();
-    for (const auto &cell : problem.get_dof_handler().active_cell_iterators())
+    const auto &u = problem.access().state().total_displacement;
+    for (const auto &cell :
+         problem.access().sheet().dof_handler().active_cell_iterators())
       for (const unsigned int v : cell->vertex_indices())
         if (cell->vertex_index(v) == vertex)
         {
@@ -106,8 +107,10 @@ namespace forming_test
   for_each_vertex(const deepdraw::problem::FormingProblem &problem,
                   const Visitor                           &visit)
   {
-    std::vector<bool> seen(problem.get_initial_vertices().size(), false);
-    for (const auto &cell : problem.get_dof_handler().active_cell_iterators())
+    std::vector<bool> seen(problem.access().sheet().initial_vertices().size(),
+                           false);
+    for (const auto &cell :
+         problem.access().sheet().dof_handler().active_cell_iterators())
       for (const unsigned int v : cell->vertex_indices())
       {
         const unsigned int vertex = cell->vertex_index(v);

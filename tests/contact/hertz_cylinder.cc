@@ -59,9 +59,9 @@ main(int argc, char *argv[])
 
   const auto problem
     = forming_test::run_from_file("hertz_cylinder.prm", "hertz_cylinder");
-  const auto nodal = problem->get_contact().nodal_contact(
-    problem->get_initial_vertices().size());
-  const auto &X = problem->get_initial_vertices();
+  const auto nodal = problem->access().contact().nodal_contact(
+    problem->access().sheet().initial_vertices().size());
+  const auto &X = problem->access().sheet().initial_vertices();
 
   // Line load per node column x_i (sum over the two nodes along y).
   std::map<long, std::pair<double, double>> columns; // i -> (x_i, f_i)
@@ -96,7 +96,7 @@ main(int argc, char *argv[])
   const double       p0   = 2. * F_line / (numbers::PI * a);
   const double       a_h  = 2. * std::sqrt(sum_fx2 / sum_f);
   const double       p0_h = columns[0].second / (0.5 * h * width);
-  const Tensor<1, 3> tool_force = problem->get_contact().tool_forces()[0];
+  const Tensor<1, 3> tool_force = problem->access().contact().tool_forces()[0];
 
   std::cout << "F' = " << F_line << " N/mm; Hertz a = " << a
             << " mm, p0 = " << p0 << " MPa" << std::endl

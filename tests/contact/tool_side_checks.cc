@@ -54,10 +54,11 @@ main(int argc, char *argv[])
   prm.parse_input_from_string(prm_text);
   forming_test::redirect_output(prm, "tool-side-checks-output");
   const auto  forming_problem = std::make_unique<problem::FormingProblem>(prm);
-  const auto &contact         = forming_problem->get_contact();
-  const auto &vertices        = forming_problem->get_state().vertices;
-  const auto &X               = forming_problem->get_initial_vertices();
-  const auto  n_unknown       = forming_problem->get_newton_unknowns().size();
+  const auto &contact         = forming_problem->access().contact();
+  const auto &vertices        = forming_problem->access().state().vertices;
+  const auto &X = forming_problem->access().sheet().initial_vertices();
+  const auto  n_unknown
+    = forming_problem->access().state().converged_solution.size();
 
   // A bottom vertex over the die's flat face (x = 62.5, y = 0, z = 0).
   unsigned int flange_vertex = numbers::invalid_unsigned_int;
@@ -70,7 +71,7 @@ main(int argc, char *argv[])
   // Its displacement dofs.
   std::vector<types::global_dof_index> z_dofs(3, numbers::invalid_dof_index);
   for (const auto &cell :
-       forming_problem->get_dof_handler().active_cell_iterators())
+       forming_problem->access().sheet().dof_handler().active_cell_iterators())
     for (const unsigned int v : cell->vertex_indices())
       if (cell->vertex_index(v) == flange_vertex)
         for (unsigned int c = 0; c < 3; ++c)

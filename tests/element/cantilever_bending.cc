@@ -79,7 +79,7 @@ namespace
     const auto forming_problem
       = forming_test::run_from_text(prm_text.str(), "cantilever-output");
 
-    const double force      = forming_problem->face_reaction(1)[2];
+    const double force      = forming_problem->access().face_reaction(1)[2];
     const double I          = width * std::pow(thickness, 3) / 12.;
     const double G          = E / (2. * (1. + nu));
     const double beam_force = delta

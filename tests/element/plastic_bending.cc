@@ -98,9 +98,9 @@ namespace
                 "  set Write VTU = false\nend\n";
     const auto forming_problem
       = forming_test::run_from_text(prm_text.str(), "bending-output");
-    const auto &X = forming_problem->get_initial_vertices();
-    const auto &u = forming_problem->get_total_displacement();
-    const auto &f = forming_problem->get_internal_force();
+    const auto &X = forming_problem->access().sheet().initial_vertices();
+    const auto &u = forming_problem->access().state().total_displacement;
+    const auto &f = forming_problem->access().internal_force();
     // Current position of the vertices on y = 0 by initial (x, z).
     std::map<std::pair<long, long>, Point<3>> position;
     std::vector<std::pair<double, Point<3>>>  end_face; // (f_x, x)

@@ -54,7 +54,8 @@ namespace
     if (final_load > 0.)
       forming_problem.run();
 
-    const unsigned int n = forming_problem.get_dof_handler().n_dofs();
+    const unsigned int n
+      = forming_problem.access().sheet().dof_handler().n_dofs();
     // A displacement increment that plastifies (strain ~ 2 %) with rotation.
     std::mt19937                           random(42);
     std::uniform_real_distribution<double> uniform(-1., 1.);

@@ -132,13 +132,13 @@ namespace
     problem::FormingProblem forming_problem(prm);
     forming_problem.run();
 
-    const auto       &X = forming_problem.get_initial_vertices();
-    const auto       &u = forming_problem.get_total_displacement();
-    const auto       &f = forming_problem.get_internal_force();
+    const auto       &X = forming_problem.access().sheet().initial_vertices();
+    const auto       &u = forming_problem.access().state().total_displacement;
+    const auto       &f = forming_problem.access().internal_force();
     std::vector<bool> seen(X.size(), false);
     std::vector<std::pair<double, double>> force_and_z; // (f_x, z)
     for (const auto &cell :
-         forming_problem.get_dof_handler().active_cell_iterators())
+         forming_problem.access().sheet().dof_handler().active_cell_iterators())
       for (const unsigned int face : cell->face_indices())
         if (cell->face(face)->at_boundary()
             && cell->face(face)->boundary_id() == 1)

@@ -235,11 +235,12 @@ namespace
                   1e-9);
       return sum / vertices.size();
     };
-    const double w     = face_position(width_direction, width);
-    const double t     = face_position(2, thickness);
-    const double e_w   = std::log(w / width);
-    const double e_t   = std::log(t / thickness);
-    const double force = problem->face_reaction(pull == 0 ? 1 : 3)[pull];
+    const double w   = face_position(width_direction, width);
+    const double t   = face_position(2, thickness);
+    const double e_w = std::log(w / width);
+    const double e_t = std::log(t / thickness);
+    const double force
+      = problem->access().face_reaction(pull == 0 ? 1 : 3)[pull];
     const double sigma = force / (w * t);
 
     const double sigma_expected = closed_form_stress(final_strain, k);

@@ -66,7 +66,7 @@ main(int argc, char *argv[])
   // This model has no tools: the contact history is given values here so
   // that its serialisation is checked too (the contact runs are checked end
   // to end by kill_and_resume_test.py).
-  state::SimulationState state = forming_problem->get_state();
+  state::SimulationState state = forming_problem->access().state();
   state.contact.pair_open      = {1, 0, 1};
   state.contact.pair_status    = {0, 2, 3};
   state.contact.tool_position  = {0.5, -1.25};

@@ -25,6 +25,8 @@
 #include <deepdraw/fe/vertex_parents.h>
 #include <deepdraw/geometry/rigid_tool.h>
 #include <deepdraw/geometry/square_cup_tools.h>
+#include <deepdraw/linear_algebra/system_matrix.h>
+#include <deepdraw/process/stage.h>
 #include <deepdraw/solver/multiplier_condensation.h>
 #include <memory>
 #include <string>
@@ -38,6 +40,7 @@ namespace deepdraw
 
     constexpr unsigned int n_tool_slots = 4;
 
+    // A tool as subsection Contact/Tool N declares it.
     struct ToolDefinition
     {
       std::string name;
@@ -49,18 +52,39 @@ namespace deepdraw
       std::string length_unit = "file";
       std::string normals     = "automatic";
       // Boundary id of the sheet face it touches: 4 bottom, 5 top.
-      unsigned int sheet_face       = 5;
-      bool         force_controlled = false;
-      // Displacement control: translation (3 expressions of t, mm), and
+      unsigned int sheet_face = 5;
+      // Control = force (a stage may change it, ToolMotion).
+      bool force_controlled = false;
+      // Translation (3 expressions of t, mm, from the file position), and
       // its text for messages.
       std::shared_ptr<FunctionParser<1>> translation;
       std::string                        translation_expression;
       // "Contact/Tool N/", for messages.
       std::string parameter_prefix;
-      // Force control: axis a (unit) and force F(t) in N along a
-      // (Process/Blank holder force, shared by all force-controlled tools).
-      Tensor<1, 3>                       axis;
+      // Force control: axis a (unit) along which the tool moves and
+      // presses.
+      Tensor<1, 3> axis;
+    };
+
+    // How a tool is driven in one stage of the process (process::Stage,
+    // D101).
+    struct ToolMotion
+    {
+      bool takes_part       = true;
+      bool force_controlled = false;
+      // Displacement control: the translation is origin + f(t), f the
+      // declared Translation (origin 0: from the file position) or the
+      // stage's (relative: origin is where the tool stood at the start of
+      // the stage).
+      std::shared_ptr<FunctionParser<1>> translation;
+      std::string                        translation_expression;
+      std::string                        translation_parameter;
+      bool                               relative = false;
+      Tensor<1, 3>                       origin;
+      // Force control: F(t) along the axis (N), and its parameter.
       std::shared_ptr<FunctionParser<1>> force;
+      std::string                        force_expression;
+      std::string                        force_parameter;
     };
 
     class ContactCoupling
@@ -69,13 +93,16 @@ namespace deepdraw
       static void
       declare_parameters(ParameterHandler &prm);
       // Reads subsection Contact; tool files are relative to
-      // prm_directory. Every force-controlled tool presses with
-      // blank_holder_force (Process/Blank holder force, an expression of
-      // t). Throws InputError naming the parameter or file.
+      // prm_directory. Throws InputError naming the parameter or file.
       void
-      parse_parameters(ParameterHandler  &prm,
-                       const std::string &prm_directory,
-                       const std::string &blank_holder_force);
+      parse_parameters(ParameterHandler &prm, const std::string &prm_directory);
+      // How each tool takes part in each stage (contact_coupling_stages.cc):
+      // the tools a stage names exist, a stage's translation is three
+      // expressions of t, its holder force one; a tool that turns to
+      // displacement control in a stage needs the stage's translation.
+      // Throws InputError naming the parameter.
+      void
+      parse_stages(const std::vector<process::Stage> &stages);
 
       bool
       active() const;
@@ -84,14 +111,25 @@ namespace deepdraw
       static constexpr double max_force = 1e9;
 
       // Input checks that need the blank and the run (D50): Search distance
-      // at most blank_diagonal; every translation finite and within
-      // +-length_bound (mm) and every tool force finite and at most
-      // max_force at each of loads (ProcessParameters::check_loads). Throws
-      // InputError naming the parameter, the value and the load.
+      // at most blank_diagonal; in every stage, every translation of a tool
+      // that takes part finite and within +-length_bound (mm), a stage's
+      // own translation 0 at its start, and every tool force finite and at
+      // most max_force, at the stage's check loads (process::Stage::
+      // check_loads). Throws InputError naming the parameter, the value and
+      // the load.
       void
-      check_values(const std::vector<double> &loads,
-                   double                     blank_diagonal,
-                   double                     length_bound) const;
+      check_values(const std::vector<process::Stage> &stages,
+                   double                             blank_diagonal,
+                   double                             length_bound) const;
+
+      // Drives the tools as stage s (of parse_stages()) says from now on;
+      // a stage's own translation starts where the tool stands. Then
+      // create_pairs() builds the pairs of the tools that take part.
+      void
+      begin_stage(unsigned int s);
+      // Whether tool k takes part in the current stage.
+      bool
+      takes_part(unsigned int k) const;
 
       // Builds the tools (square-cup builder tools need the geometry of
       // subsection Tools and the sheet thickness; a free edge of a CAD
@@ -149,7 +187,7 @@ namespace deepdraw
       assemble(const std::vector<Point<3>>     &positions,
                const Vector<double>            &solution,
                const AffineConstraints<double> &constraints,
-               SparseMatrix<double>            *matrix,
+               linear_algebra::SystemMatrix    *matrix,
                Vector<double>                  &rhs,
                double                           new_load,
                bool                             predictor = false);
@@ -202,11 +240,16 @@ namespace deepdraw
       tools() const;
       const std::vector<ToolDefinition> &
       tool_definitions() const;
-      // Translation of displacement-controlled tool k at load t, and the
-      // force of force-controlled tool k; both throw std::runtime_error
-      // naming the parameter if the value is not finite (exit code 3).
+      // Translation of displacement-controlled tool k at load t in the
+      // current stage, and the force of force-controlled tool k; both throw
+      // std::runtime_error naming the parameter if the value is not finite
+      // (exit code 3).
       Tensor<1, 3>
       prescribed_translation(unsigned int k, double load) const;
+      // The translation that subsection Contact/Tool N declares, at load t
+      // (the same failure).
+      Tensor<1, 3>
+      declared_translation(unsigned int k, double load) const;
       double
       prescribed_force(unsigned int k, double load) const;
       // Unknowns of the positions of the force-controlled tools.
@@ -224,12 +267,16 @@ namespace deepdraw
       search_time() const;
 
       // Checks that no tool passed through the sheet (D56,
-      // contact_coupling_checks.cc). At the start: no node more than half
-      // the sheet thickness inside a tool, and every tool's normal towards
-      // the sheet face it acts on; throws InputError naming the tool.
+      // contact_coupling_checks.cc). At the start (of the run, at load,
+      // for the tools flagged in `tools`, all if empty): no node more than
+      // half the sheet thickness inside a tool, and every tool's normal
+      // towards the sheet face it acts on; throws InputError naming the
+      // tool.
       void
       check_initial_placement(const std::vector<Point<3>> &positions,
-                              double sheet_thickness) const;
+                              double                       sheet_thickness,
+                              double                       load  = 0.,
+                              const std::vector<bool>     &tools = {}) const;
       // Before an increment: "" or why a displacement-controlled tool
       // moves farther than the search distance in [old_load, new_load];
       // with the converged solution, the same for force-controlled tools.
@@ -263,12 +310,18 @@ namespace deepdraw
       {
         std::vector<PairSnapshot>          pairs;
         std::vector<std::array<double, 2>> tool_position;
+        // Where each tool stood (its translation).
+        std::vector<Tensor<1, 3>> translation;
       };
       Snapshot
       snapshot(const Vector<double> &converged,
                const Vector<double> &previous) const;
       // After create_pairs() on the refined mesh: every pair starts from the
       // pairs of the same tool at its node's parents (an old node: itself).
+      // Without parents (a new stage on the same mesh) every pair takes the
+      // state and multipliers of the pair of its node and tool, if there
+      // was one, exactly, and a tool that turned to force control starts
+      // at its position along its axis.
       // The multipliers are nodal forces; their pressures λ/a (a: the
       // node's share of the sheet face, old_area before and new_area after
       // the refinement, by vertex) are interpolated and multiplied by the
@@ -285,6 +338,12 @@ namespace deepdraw
                Vector<double>                       &previous);
 
     private:
+      // transfer() on the same mesh.
+      void
+      carry_over(const Snapshot &old,
+                 Vector<double> &converged,
+                 Vector<double> &previous);
+
       struct Pair
       {
         unsigned int                           vertex;
@@ -306,12 +365,13 @@ namespace deepdraw
                     const Vector<double>        &solution,
                     bool                         predictor) const;
 
-      contact::ContactParameters parameters;
-      double                     search_distance = 2.;
-      // Process/Blank holder force, for messages.
-      std::string                      holder_force_expression;
-      std::vector<ToolDefinition>      definitions;
-      std::vector<geometry::RigidTool> tool_list;
+      contact::ContactParameters  parameters;
+      double                      search_distance = 2.;
+      std::vector<ToolDefinition> definitions;
+      // Per stage, per tool; and those of the current stage.
+      std::vector<std::vector<ToolMotion>> stage_motions;
+      std::vector<ToolMotion>              motions;
+      std::vector<geometry::RigidTool>     tool_list;
       // Unknown index of the position of each force-controlled tool
       // (invalid for displacement control).
       std::vector<types::global_dof_index>      position_dof;

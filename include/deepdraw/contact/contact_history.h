@@ -21,6 +21,12 @@ namespace deepdraw
       // the next increment counts state changes.
       std::vector<unsigned char> pair_status;
       std::vector<double>        tool_position;
+      // Per tool, 3 doubles each: where a stage's translation starts from
+      // (the tool's translation at the start of the stage when the stage
+      // gives the translation, else 0), and where the tool stands (its
+      // translation; a tool that takes no part in a stage stays there).
+      std::vector<double> tool_origin;
+      std::vector<double> tool_translation;
     };
   } // namespace contact
 } // namespace deepdraw

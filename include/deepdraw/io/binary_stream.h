@@ -40,6 +40,30 @@ namespace deepdraw
     {
       read_bytes(stream, &value, sizeof(T), source);
     }
+
+    // A text as its size and its bytes.
+    inline void
+    write_string(std::ostream &stream, const std::string &text)
+    {
+      write_value(stream, text.size());
+      stream.write(text.data(), text.size());
+    }
+
+    // Throws std::runtime_error if the stream ends early or the size is
+    // beyond max_size.
+    inline std::string
+    read_string(std::istream      &stream,
+                const std::string &source,
+                const std::size_t  max_size = std::size_t(1) << 32)
+    {
+      std::size_t n = 0;
+      read_value(stream, n, source);
+      if (n > max_size)
+        throw std::runtime_error("a text block of " + source + " is too long");
+      std::string text(n, '\0');
+      read_bytes(stream, text.data(), n, source);
+      return text;
+    }
   } // namespace io
 } // namespace deepdraw
 

@@ -4,6 +4,7 @@
 #ifndef deepdraw_io_pvd_record_h
 #define deepdraw_io_pvd_record_h
 
+#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,14 @@ namespace deepdraw
       std::string        filename;
       std::vector<Entry> entries;
     };
+
+    // The entries as a binary image (a checkpoint), and back; read throws
+    // std::runtime_error naming source if the stream is cut short.
+    void
+    write_entries(std::ostream                        &stream,
+                  const std::vector<PvdRecord::Entry> &entries);
+    std::vector<PvdRecord::Entry>
+    read_entries(std::istream &stream, const std::string &source);
   } // namespace io
 } // namespace deepdraw
 

@@ -42,6 +42,14 @@ namespace deepdraw
       parse_parameters(ParameterHandler &prm,
                        bool              symmetry_plane_x,
                        bool              symmetry_plane_y);
+      // The same from the text of a list; parameter_name names it in
+      // messages (a stage's list: "Process/Stage 2/Prescribed
+      // displacements").
+      void
+      parse(const std::string &text,
+            bool               symmetry_plane_x,
+            bool               symmetry_plane_y,
+            const std::string &parameter_name);
 
       // Largest |u| allowed at the check loads, in blank sizes (D50).
       static constexpr double max_relative_displacement = 100.;
@@ -63,6 +71,8 @@ namespace deepdraw
             double                        load) const;
 
       std::vector<PrescribedDisplacement> entries;
+      // The parameter the entries were read from, for messages.
+      std::string parameter = "Boundary conditions/Prescribed displacements";
     };
   } // namespace process
 } // namespace deepdraw

@@ -5,6 +5,7 @@
 #define deepdraw_process_process_parameters_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <deepdraw/process/stage.h>
 #include <string>
 #include <vector>
 
@@ -22,8 +23,9 @@ namespace deepdraw
       // ContactCoupling parses and checks it.
       std::string blank_holder_force = "0";
 
+      // With the stage slots (process::declare_stage_parameters).
       static void
-      declare_parameters(ParameterHandler &prm);
+      declare_parameters(ParameterHandler &prm, unsigned int n_tool_slots);
       void
       parse_parameters(ParameterHandler &prm);
 

@@ -6,6 +6,7 @@
 #define deepdraw_solver_increment_control_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <string>
 #include <vector>
 
 namespace deepdraw
@@ -31,6 +32,23 @@ namespace deepdraw
       declare_parameters(ParameterHandler &prm);
       void
       parse_parameters(ParameterHandler &prm);
+
+      // A stage's subsection Load stepping (process::Stage): the same
+      // entries, empty by default; parse_overrides() replaces the values
+      // that are not empty, checked as parse_parameters() checks them.
+      // prefix names the stage in messages ("Process/Stage 2/").
+      static void
+      declare_overrides(ParameterHandler &prm);
+      void
+      parse_overrides(ParameterHandler &prm, const std::string &prefix);
+      // The name of the first override that is not empty, or "".
+      static std::string
+      first_override(ParameterHandler &prm);
+
+    private:
+      // Throws InputError (prefix + the parameter) for inconsistent values.
+      void
+      check(const std::string &prefix) const;
     };
 
     class IncrementControl

@@ -8,8 +8,8 @@
 
 #include <cstdint>
 #include <deal.II/base/parameter_handler.h>
-#include <deepdraw/io/pvd_record.h>
 #include <deepdraw/state/simulation_state.h>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -33,22 +33,17 @@ namespace deepdraw
       parse_parameters(ParameterHandler &prm);
     };
 
-    // How far the output got at the checkpoint: the VTU counter, the steps
-    // of solution.pvd and the byte size of every CSV table (a resumed run
-    // cuts the tables back to these sizes and appends to them).
-    struct OutputProgress
-    {
-      unsigned int                                        output_step = 0;
-      std::vector<io::PvdRecord::Entry>                   pvd_entries;
-      std::vector<std::pair<std::string, std::uintmax_t>> table_sizes;
-    };
-
     struct Checkpoint
     {
       // The model's parameters, as flatten_parameters() writes them.
       std::string     parameters;
       SimulationState state;
-      OutputProgress  output;
+      // The byte size of every CSV table at the checkpoint (a resumed run
+      // cuts the tables back to these sizes and appends to them).
+      std::vector<std::pair<std::string, std::uintmax_t>> table_sizes;
+      // What each post-processor keeps (postprocess::Interface::save), by
+      // its name.
+      std::map<std::string, std::string> postprocessors;
     };
 
     // The checkpoint file of a run writing to output_directory.
@@ -58,12 +53,10 @@ namespace deepdraw
     // Throws std::runtime_error naming the file if it cannot be written
     // (the previous checkpoint then stays).
     void
-    write_checkpoint(const std::string     &filename,
-                     const std::string     &parameters,
-                     const SimulationState &state,
-                     const OutputProgress  &output);
+    write_checkpoint(const std::string &filename, const Checkpoint &checkpoint);
     // Throws InputError naming the file if it is missing or not a whole
-    // checkpoint.
+    // checkpoint. A checkpoint of the format before stages and
+    // post-processors (D101) is read as one of the first stage.
     Checkpoint
     read_checkpoint(const std::string &filename);
 
@@ -74,12 +67,16 @@ namespace deepdraw
 
     // The parameters whose values differ between two flattened listings,
     // as "Subsection/Name: old -> new", leaving out those a resumed run may
-    // change: subsections Output and Checkpoint, and the stopping
-    // parameters Process/Final load, Load stepping/Minimum increment and
-    // Load stepping/Maximum cut-backs (D55).
+    // change: subsections Output and Checkpoint, the stopping parameters
+    // Process/Final load, Load stepping/Minimum increment and Load
+    // stepping/Maximum cut-backs (D55), and those of the stages after
+    // `stage` (0 the first; D101). A parameter the checkpoint does not have
+    // (it is newer) counts as unchanged if it has its value of `defaults`.
     std::vector<std::string>
     changed_model_parameters(const std::string &checkpointed,
-                             const std::string &current);
+                             const std::string &current,
+                             const std::string &defaults,
+                             unsigned int       stage);
 
     // Sizes of the *.csv files in directory (names relative to it).
     std::vector<std::pair<std::string, std::uintmax_t>>

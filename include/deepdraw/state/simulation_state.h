@@ -48,6 +48,11 @@ namespace deepdraw
       // on the mesh of that cycle as (level, index, deal.II refinement
       // case); a resume replays them on the blank's mesh.
       std::vector<std::vector<std::array<int, 3>>> refinements;
+      // The stage of the process (process::Stage, by its place in the
+      // list) the increments belong to, and whether it has ended (its end
+      // outputs written, the next stage not yet begun).
+      unsigned int stage           = 0;
+      bool         stage_completed = false;
 
       // Binary image of all of the above; read() throws std::runtime_error
       // if the stream is not one (or was cut short).

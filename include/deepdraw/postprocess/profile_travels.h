@@ -1,0 +1,28 @@
+// The travels at which the thickness profiles and the earing profile are
+// written: `Output/Thickness profile travels`, declared by the "thickness
+// profiles" post-processor and read by it and by "earing".
+#ifndef deepdraw_postprocess_profile_travels_h
+#define deepdraw_postprocess_profile_travels_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <vector>
+
+namespace deepdraw
+{
+  namespace postprocess
+  {
+    void
+    declare_profile_travels(dealii::ParameterHandler &prm);
+
+    // The travels of the parameter, checked: two travels must not give the
+    // same file name (InputError).
+    std::vector<double>
+    parse_profile_travels(dealii::ParameterHandler &prm);
+
+    // Those up to final_load, sorted, each once.
+    std::vector<double>
+    travels_within(const std::vector<double> &travels, double final_load);
+  } // namespace postprocess
+} // namespace deepdraw
+
+#endif

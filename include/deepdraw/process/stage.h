@@ -1,0 +1,94 @@
+// A stage of the forming process (doc/user_guide.md §2.6, D101): a range of
+// the load parameter t with its own kind, the tools that take part and how
+// each moves or is loaded, the boundary conditions and the load stepping.
+// The stages run one after the other; t runs on through them, so every
+// expression of t keeps its meaning. They are declared in the slots
+// `subsection Process / subsection Stage 1 … 4`; a prm without named stages
+// is one forming stage from 0 to Process/Final load.
+#ifndef deepdraw_process_stage_h
+#define deepdraw_process_stage_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deepdraw/process/prescribed_displacements.h>
+#include <deepdraw/solver/increment_control.h>
+#include <string>
+#include <vector>
+
+namespace deepdraw
+{
+  namespace process
+  {
+    using namespace dealii;
+
+    constexpr unsigned int n_stage_slots = 4;
+
+    // How one tool slot moves in a stage, where the stage changes it;
+    // empty strings keep what subsection Contact/Tool N declares.
+    struct ToolStageSettings
+    {
+      // "", "displacement" or "force".
+      std::string control;
+      // Displacement control: three expressions of t separated by ';', the
+      // translation from where the tool stands at the start of the stage
+      // (so 0 there).
+      std::string translation;
+    };
+
+    struct Stage
+    {
+      enum class Kind
+      {
+        forming
+      };
+
+      std::string name;
+      Kind        kind       = Kind::forming;
+      double      start_load = 0.;
+      double      end_load   = 1.;
+      // The names of the tools that take part; empty: all of them.
+      std::vector<std::string> tools;
+      // Force of the force-controlled tools, an expression of t (N), and
+      // the parameter it comes from (for messages).
+      std::string blank_holder_force           = "0";
+      std::string blank_holder_force_parameter = "Process/Blank holder force";
+      PrescribedDisplacements prescribed;
+      // Its final_load is end_load.
+      solver::IncrementControlParameters load_stepping;
+      // One per tool slot.
+      std::vector<ToolStageSettings> tool_settings;
+      // "Process/Stage N/" for messages; empty for the stage of a prm
+      // without stages (its parameters are the top-level ones).
+      std::string parameter_prefix;
+
+      // The loads at which its expressions are checked when the input is
+      // read (D50): 11 loads from start_load to end_load.
+      std::vector<double>
+      check_loads() const;
+    };
+
+    std::string
+    to_string(Stage::Kind kind);
+
+    // Declares subsection Stage 1 … Stage n_stage_slots in the current
+    // subsection (Process); n_tool_slots tool subsections in each.
+    void
+    declare_stage_parameters(ParameterHandler &prm, unsigned int n_tool_slots);
+
+    // Reads the stages from the current subsection (Process). Without a
+    // named stage: one forming stage from 0 to final_load with
+    // blank_holder_force, the top-level boundary conditions and load
+    // stepping. The top-level values are the defaults of every stage.
+    // Throws InputError naming the parameter.
+    std::vector<Stage>
+    parse_stages(ParameterHandler                         &prm,
+                 double                                    final_load,
+                 const std::string                        &blank_holder_force,
+                 const PrescribedDisplacements            &boundary_conditions,
+                 const solver::IncrementControlParameters &load_stepping,
+                 bool                                      symmetry_plane_x,
+                 bool                                      symmetry_plane_y,
+                 unsigned int                              n_tool_slots);
+  } // namespace process
+} // namespace deepdraw
+
+#endif

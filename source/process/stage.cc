@@ -1,0 +1,337 @@
+#include <deal.II/base/utilities.h>
+#include <deepdraw/io/input_error.h>
+#include <deepdraw/io/printable_text.h>
+#include <deepdraw/process/stage.h>
+#include <iomanip>
+#include <sstream>
+
+namespace deepdraw
+{
+  namespace process
+  {
+    namespace
+    {
+      std::string
+      slot_name(const unsigned int slot)
+      {
+        return "Stage " + std::to_string(slot + 1);
+      }
+
+      std::string
+      number(const double value)
+      {
+        std::ostringstream text;
+        text << std::setprecision(10) << value;
+        return text.str();
+      }
+
+      // The entries of one named stage slot (the current subsection).
+      Stage
+      parse_stage(ParameterHandler                         &prm,
+                  const std::string                        &prefix,
+                  const double                              start_load,
+                  const double                              end_load,
+                  const std::string                        &blank_holder_force,
+                  const PrescribedDisplacements            &boundary_conditions,
+                  const solver::IncrementControlParameters &load_stepping,
+                  const bool                                symmetry_plane_x,
+                  const bool                                symmetry_plane_y,
+                  const unsigned int                        n_tool_slots)
+      {
+        Stage stage;
+        stage.parameter_prefix  = prefix;
+        stage.name              = Utilities::trim(prm.get("Name"));
+        stage.kind              = Stage::Kind::forming;
+        stage.start_load        = start_load;
+        stage.end_load          = end_load;
+        const std::string tools = Utilities::trim(prm.get("Tools"));
+        if (tools != "all")
+          for (const std::string &name : Utilities::split_string_list(tools))
+            if (!name.empty())
+              stage.tools.push_back(name);
+        const std::string force
+          = Utilities::trim(prm.get("Blank holder force"));
+        stage.blank_holder_force = force.empty() ? blank_holder_force : force;
+        if (!force.empty())
+          stage.blank_holder_force_parameter = prefix + "Blank holder force";
+        const std::string conditions
+          = Utilities::trim(prm.get("Prescribed displacements"));
+        if (conditions.empty())
+          stage.prescribed = boundary_conditions;
+        else
+          stage.prescribed.parse(conditions == "none" ? std::string()
+                                                      : conditions,
+                                 symmetry_plane_x,
+                                 symmetry_plane_y,
+                                 prefix + "Prescribed displacements");
+        stage.load_stepping = load_stepping;
+        stage.load_stepping.parse_overrides(prm, prefix);
+        stage.load_stepping.final_load = end_load;
+        for (unsigned int slot = 0; slot < n_tool_slots; ++slot)
+        {
+          prm.enter_subsection("Tool " + std::to_string(slot + 1));
+          stage.tool_settings.push_back(
+            {Utilities::trim(prm.get("Control")),
+             Utilities::trim(prm.get("Translation"))});
+          prm.leave_subsection();
+        }
+        return stage;
+      }
+    } // namespace
+
+
+    std::vector<double>
+    Stage::check_loads() const
+    {
+      std::vector<double> loads;
+      for (unsigned int k = 0; k <= 10; ++k)
+        loads.push_back(
+          k == 10 ? end_load : start_load + (end_load - start_load) * k / 10.);
+      return loads;
+    }
+
+
+    std::string
+    to_string(const Stage::Kind kind)
+    {
+      switch (kind)
+      {
+        case Stage::Kind::forming:
+          return "forming";
+      }
+      return "forming";
+    }
+
+
+    void
+    declare_stage_parameters(ParameterHandler  &prm,
+                             const unsigned int n_tool_slots)
+    {
+      for (unsigned int slot = 0; slot < n_stage_slots; ++slot)
+      {
+        prm.enter_subsection(slot_name(slot));
+        prm.declare_entry("Name",
+                          "",
+                          Patterns::Anything(),
+                          "Name of the stage; an empty name leaves the slot "
+                          "unused. Stages run in the order of their slots, "
+                          "from Stage 1 on, without gaps; a prm without "
+                          "named stages is one forming stage from 0 to "
+                          "Process/Final load.");
+        prm.declare_entry("Kind",
+                          "forming",
+                          Patterns::Selection("forming"),
+                          "What the stage does: 'forming', the tools move "
+                          "and press as given and the sheet follows.");
+        prm.declare_entry("Final load",
+                          "",
+                          Patterns::Anything(),
+                          "The load t at which the stage ends; it begins "
+                          "where the stage before it ended (the first at "
+                          "0). The last stage ends at Process/Final load "
+                          "and leaves this empty.");
+        prm.declare_entry("Tools",
+                          "all",
+                          Patterns::Anything(),
+                          "The tools that take part in the stage, 'all' or "
+                          "a comma-separated list of their names "
+                          "(Contact/Tool N/Name). A tool left out has no "
+                          "contact with the sheet in this stage: its "
+                          "contact forces are removed at the start of the "
+                          "stage.");
+        prm.declare_entry("Blank holder force",
+                          "",
+                          Patterns::Anything(),
+                          "Force of the force-controlled tools in this "
+                          "stage, an expression of t (N); empty: "
+                          "Process/Blank holder force.");
+        prm.declare_entry("Prescribed displacements",
+                          "",
+                          Patterns::Anything(),
+                          "The boundary conditions of this stage, in the "
+                          "form of Boundary conditions/Prescribed "
+                          "displacements; empty: that list; 'none': none "
+                          "beside the symmetry planes. A dof prescribed "
+                          "from this stage on moves by the change of its "
+                          "expression from where it is at the stage's "
+                          "start.");
+        solver::IncrementControlParameters::declare_overrides(prm);
+        for (unsigned int tool = 0; tool < n_tool_slots; ++tool)
+        {
+          prm.enter_subsection("Tool " + std::to_string(tool + 1));
+          prm.declare_entry("Control",
+                            "",
+                            Patterns::Selection("|displacement|force"),
+                            "How the tool of Contact/Tool "
+                              + std::to_string(tool + 1)
+                              + " is driven in this stage; empty: as "
+                                "declared there.");
+          prm.declare_entry("Translation",
+                            "",
+                            Patterns::Anything(),
+                            "Displacement control in this stage: the "
+                            "translation of the tool from where it stands "
+                            "at the start of the stage, three expressions "
+                            "of t separated by ';' (mm), 0 at the stage's "
+                            "start; empty: the translation declared in "
+                            "Contact/Tool "
+                              + std::to_string(tool + 1)
+                              + " (from the tool's file position).");
+          prm.leave_subsection();
+        }
+        prm.leave_subsection();
+      }
+    }
+
+
+    namespace
+    {
+      // An unnamed slot must keep every entry at its default: a setting
+      // there would silently not apply.
+      void
+      check_unused_slot(ParameterHandler  &prm,
+                        const std::string &prefix,
+                        const unsigned int n_tool_slots)
+      {
+        std::vector<std::pair<std::string, std::string>> entries
+          = {{"Kind", "forming"},
+             {"Final load", ""},
+             {"Tools", "all"},
+             {"Blank holder force", ""},
+             {"Prescribed displacements", ""}};
+        const auto check = [&](const std::string &path)
+        {
+          for (const auto &[name, default_value] : entries)
+            if (Utilities::trim(prm.get(name)) != default_value)
+              throw InputError(prefix + path + name
+                               + " is set, but the stage has no Name (an "
+                                 "unnamed slot is unused)");
+        };
+        check("");
+        entries = {{"Control", ""}, {"Translation", ""}};
+        for (unsigned int tool = 0; tool < n_tool_slots; ++tool)
+        {
+          prm.enter_subsection("Tool " + std::to_string(tool + 1));
+          check("Tool " + std::to_string(tool + 1) + "/");
+          prm.leave_subsection();
+        }
+        const std::string load_stepping
+          = solver::IncrementControlParameters::first_override(prm);
+        if (!load_stepping.empty())
+          throw InputError(prefix + "Load stepping/" + load_stepping
+                           + " is set, but the stage has no Name (an "
+                             "unnamed slot is unused)");
+      }
+
+
+      // Where a named stage ends: its Final load, the last one at
+      // Process/Final load.
+      double
+      stage_end(ParameterHandler  &prm,
+                const std::string &prefix,
+                const bool         last,
+                const double       final_load,
+                const double       start)
+      {
+        const std::string text = Utilities::trim(prm.get("Final load"));
+        if (last && !text.empty())
+          throw InputError(prefix + "Final load = '" + io::one_line(text)
+                           + "': the last stage ends at Process/Final load; "
+                             "leave it empty");
+        double end = final_load;
+        if (!last)
+        {
+          try
+          {
+            end = Utilities::string_to_double(text);
+          }
+          catch (...)
+          {
+            throw InputError(prefix + "Final load = '" + io::one_line(text)
+                             + "': a stage before the last needs the load "
+                               "at which it ends, a number");
+          }
+        }
+        if (!(end > start) || !(end <= 1e6))
+          throw InputError((last ? std::string("Process/Final load = ")
+                                 : prefix + "Final load = ")
+                           + number(end) + ": the stage of " + prefix
+                           + " begins at load " + number(start)
+                           + " and must end after it (at most at 1e6)");
+        return end;
+      }
+    } // namespace
+
+
+    std::vector<Stage>
+    parse_stages(ParameterHandler                         &prm,
+                 const double                              final_load,
+                 const std::string                        &blank_holder_force,
+                 const PrescribedDisplacements            &boundary_conditions,
+                 const solver::IncrementControlParameters &load_stepping,
+                 const bool                                symmetry_plane_x,
+                 const bool                                symmetry_plane_y,
+                 const unsigned int                        n_tool_slots)
+    {
+      std::vector<unsigned int> named;
+      for (unsigned int slot = 0; slot < n_stage_slots; ++slot)
+      {
+        const std::string prefix = "Process/" + slot_name(slot) + "/";
+        prm.enter_subsection(slot_name(slot));
+        if (!Utilities::trim(prm.get("Name")).empty())
+          named.push_back(slot);
+        else
+          check_unused_slot(prm, prefix, n_tool_slots);
+        prm.leave_subsection();
+        if (!named.empty() && named.back() != named.size() - 1)
+          throw InputError(prefix
+                           + "Name: stages run from Stage 1 on "
+                             "without gaps, but "
+                           + slot_name(named.size() - 1) + " has no name");
+      }
+
+      std::vector<Stage> stages;
+      if (named.empty())
+      {
+        // The process of a prm without stages: the top-level parameters.
+        Stage stage;
+        stage.name                     = "forming";
+        stage.end_load                 = final_load;
+        stage.blank_holder_force       = blank_holder_force;
+        stage.prescribed               = boundary_conditions;
+        stage.load_stepping            = load_stepping;
+        stage.load_stepping.final_load = final_load;
+        stage.tool_settings.resize(n_tool_slots);
+        stages.push_back(std::move(stage));
+        return stages;
+      }
+
+      double start = 0.;
+      for (const unsigned int slot : named)
+      {
+        const std::string prefix = "Process/" + slot_name(slot) + "/";
+        prm.enter_subsection(slot_name(slot));
+        const double end
+          = stage_end(prm, prefix, slot == named.back(), final_load, start);
+        Stage stage = parse_stage(prm,
+                                  prefix,
+                                  start,
+                                  end,
+                                  blank_holder_force,
+                                  boundary_conditions,
+                                  load_stepping,
+                                  symmetry_plane_x,
+                                  symmetry_plane_y,
+                                  n_tool_slots);
+        prm.leave_subsection();
+        for (const Stage &other : stages)
+          if (other.name == stage.name)
+            throw InputError(prefix + "Name = '" + io::one_line(stage.name)
+                             + "': another stage has this name");
+        stages.push_back(std::move(stage));
+        start = end;
+      }
+      return stages;
+    }
+  } // namespace process
+} // namespace deepdraw
