@@ -27,26 +27,13 @@ namespace deepdraw
 
 
     void
-    FormingProblem::prepare_increment(const double old_load,
-                                      const double new_load)
+    FormingProblem::start_from_converged_state()
     {
-      constraints.set_increment(discretisation,
-                                stage().prescribed,
-                                old_load,
-                                new_load);
-      if (contact_coupling.active())
-        contact_coupling.start_increment(old_load, new_load);
-      start_load  = old_load;
-      target_load = new_load;
-    }
-
-
-    void
-    FormingProblem::start_enhanced_parameters(const double ratio)
-    {
-      trial_enhanced_parameters = committed.enhanced_parameters;
-      for (fe::EnhancedParameters &cell : trial_enhanced_parameters)
-        cell.scale(ratio);
+      newton_unknowns = model->state().converged_solution;
+      for (types::global_dof_index i = 0;
+           i < model->sheet().n_displacement_dofs();
+           ++i)
+        newton_unknowns[i] = 0.;
     }
 
 
@@ -55,17 +42,12 @@ namespace deepdraw
                                     const double  new_load,
                                     unsigned int &iterations)
     {
-      const types::global_dof_index n_u = discretisation.n_displacement_dofs();
+      const types::global_dof_index n_u = model->sheet().n_displacement_dofs();
+      const state::SimulationState &committed = model->state();
       prepare_increment(old_load, new_load);
-      linear_system->reset_reduction();
+      model->linear_system().reset_reduction();
       // Displacement increment 0; contact forces and tool positions start
       // from their converged values (the tangent predictor's start).
-      const auto start_from_converged_state = [&]()
-      {
-        newton_unknowns = committed.converged_solution;
-        for (types::global_dof_index i = 0; i < n_u; ++i)
-          newton_unknowns[i] = 0.;
-      };
       start_from_converged_state();
       // The element-internal unknowns start as du does: from rest, or the
       // last increment scaled (extrapolation predictor).
@@ -74,7 +56,7 @@ namespace deepdraw
       const double ratio
         = extrapolate ? (new_load - old_load) / committed.last_load_increment
                       : 0.;
-      start_enhanced_parameters(ratio);
+      model->start_enhanced_parameters(ratio);
       progress.start_attempt();
 
       // Extrapolation predictor: the last increment scaled to this one
@@ -86,10 +68,10 @@ namespace deepdraw
         const Vector<double> &last     = committed.converged_solution;
         const Vector<double> &previous = committed.previous_converged_solution;
         for (types::global_dof_index i = 0; i < newton_unknowns.size(); ++i)
-          newton_unknowns[i] = i < n_u
-                                 ? ratio * last[i]
-                                 : last[i] + ratio * (last[i] - previous[i]);
-        constraints.predictor().distribute(newton_unknowns);
+          newton_unknowns[i]
+            = i < n_u ? ratio * last[i]
+                      : last[i] + ratio * (last[i] - previous[i]);
+        model->constraints().predictor().distribute(newton_unknowns);
         const IncrementOutcome status = assemble_at(newton_unknowns, false);
         if (status == IncrementOutcome::converged)
           assembled = true;
@@ -97,7 +79,7 @@ namespace deepdraw
         {
           // Back to the tangent predictor from the converged state.
           start_from_converged_state();
-          start_enhanced_parameters(0.);
+          model->start_enhanced_parameters(0.);
           progress.contact_changes = 0;
         }
         else
@@ -114,56 +96,20 @@ namespace deepdraw
 
     FormingProblem::IncrementOutcome
     FormingProblem::assemble(const Vector<double>            &unknowns,
-                             const AffineConstraints<double> &constraints_used,
+                             const AffineConstraints<double> &constraints,
                              const bool                       with_matrix)
     {
-      Timer timer;
-      // On a refined mesh the hanging dofs are evaluated from their masters
-      // (an iterate may not satisfy the constraints, e.g. after the
-      // predictor's damped step).
-      const AffineConstraints<double> &hanging
-        = discretisation.hanging_node_constraints();
-      Vector<double> consistent;
-      if (hanging.n_constraints() > 0)
-      {
-        consistent = unknowns;
-        hanging.distribute(consistent);
-      }
-      const Vector<double> &du
-        = hanging.n_constraints() > 0 ? consistent : unknowns;
-      linear_system->zero(with_matrix);
-      internal_forces = 0.;
-      linear_algebra::SystemMatrix *matrix
-        = with_matrix ? &linear_system->matrix() : nullptr;
-      const ElementAssemblyResult elements
-        = assemble_elements(*element,
-                            discretisation,
-                            du,
-                            constraints_used,
-                            committed.history,
-                            trial_history,
-                            trial_enhanced_parameters,
-                            matrix,
-                            linear_system->rhs(),
-                            internal_forces);
-      progress.plastic_points = elements.plastic_points;
-      progress.assembly_time += timer.wall_time();
-
-      // Contact forces and their constraints, after the elements so that
-      // the assembly time excludes the contact search.
-      progress.last_assembly_changes = 0;
-      if (contact_coupling.active())
-        progress.last_assembly_changes = contact_coupling.assemble(
-          discretisation.triangulation().get_vertices(),
-          du,
-          constraints_used,
-          matrix,
-          linear_system->rhs(),
-          target_load,
-          &constraints_used == &constraints.predictor());
-      progress.contact_changes += progress.last_assembly_changes;
-
-      switch (elements.status)
+      const AssemblyResult result
+        = model->assemble(unknowns,
+                          constraints,
+                          with_matrix,
+                          target_load,
+                          &constraints == &model->constraints().predictor());
+      progress.plastic_points = result.plastic_points;
+      progress.assembly_time += result.element_time;
+      progress.last_assembly_changes = result.contact_changes;
+      progress.contact_changes += result.contact_changes;
+      switch (result.status)
       {
         case fe::ElementStatus::ok:
           return IncrementOutcome::converged;
@@ -178,40 +124,13 @@ namespace deepdraw
     }
 
 
-    bool
-    FormingProblem::assemble_system(const Vector<double> &unknowns)
-    {
-      AffineConstraints<double> none;
-      none.close();
-      return assemble(unknowns, none, true) == IncrementOutcome::converged;
-    }
-
-
-    bool
-    FormingProblem::evaluate_residual(const Vector<double> &unknowns,
-                                      Vector<double>       &residual,
-                                      FullMatrix<double>   *tangent)
-    {
-      AffineConstraints<double> none;
-      none.close();
-      const IncrementOutcome status
-        = assemble(unknowns, none, tangent != nullptr);
-      // Without constraints rhs = -r for all equations, contact included.
-      residual = linear_system->rhs();
-      residual *= -1.;
-      if (tangent != nullptr)
-        linear_system->copy_to(*tangent);
-      return status == IncrementOutcome::converged;
-    }
-
-
     // The forming problem as solver::NewtonSystem.
     FormingProblem::IncrementOutcome
     FormingProblem::assemble_at(const Vector<double> &x, const bool predictor)
     {
       return assemble(x,
-                      predictor ? constraints.predictor()
-                                : constraints.homogeneous(),
+                      predictor ? model->constraints().predictor()
+                                : model->constraints().homogeneous(),
                       true);
     }
 
@@ -229,19 +148,20 @@ namespace deepdraw
         std::vector<types::global_dof_index> decoupled;
         if (parameters.linear_solver.leave_out_decoupled)
         {
-          decoupled = constraints.decoupled_unknowns(discretisation);
-          contact_coupling.add_open_multipliers(decoupled);
+          decoupled
+            = model->constraints().decoupled_unknowns(model->sheet());
+          model->contact().add_open_multipliers(decoupled);
         }
-        linear_system->solve(correction,
-                             contact_coupling.tool_position_unknowns(),
-                             decoupled);
+        model->linear_system().solve(
+          correction, model->contact().tool_position_unknowns(), decoupled);
       }
       catch (const std::exception &error)
       {
         std::cerr << "  " << error.what() << std::endl;
         return false;
       }
-      (predictor ? constraints.predictor() : constraints.homogeneous())
+      (predictor ? model->constraints().predictor()
+                 : model->constraints().homogeneous())
         .distribute(correction);
       progress.solve_time += timer.wall_time();
       return true;
@@ -251,30 +171,30 @@ namespace deepdraw
     bool
     FormingProblem::is_prescribed(const types::global_dof_index i) const
     {
-      return constraints.predictor().is_constrained(i);
+      return model->constraints().predictor().is_constrained(i);
     }
 
 
     solver::ResidualMeasures
     FormingProblem::residual_measures() const
     {
-      const types::global_dof_index n_u = discretisation.n_displacement_dofs();
-      const Vector<double>         &rhs = linear_system->rhs();
+      const types::global_dof_index n_u = model->sheet().n_displacement_dofs();
+      const Vector<double>         &rhs = model->linear_system().rhs();
       Vector<double>                free_residual = rhs;
-      constraints.homogeneous().set_zero(free_residual);
+      model->constraints().homogeneous().set_zero(free_residual);
       // Forces are measured against the internal forces (reactions
       // included) or the largest tool force (doc/theory.md §5.2).
-      double reference = block_norm(internal_forces, n_u);
-      for (const Tensor<1, 3> &force : contact_coupling.tool_forces())
+      double reference = block_norm(model->internal_force(), n_u);
+      for (const Tensor<1, 3> &force : model->contact().tool_forces())
         reference = std::max(reference, force.norm());
       if (!(reference > 0.))
         reference = 1.;
       solver::ResidualMeasures measures;
       measures.force   = block_norm(free_residual, n_u) / reference;
-      measures.contact = contact_coupling.residual_norm(rhs) / reference;
+      measures.contact = model->contact().residual_norm(rhs) / reference;
       measures.tool_forces_met
         = parameters.newton.tool_force_tolerance <= 0.
-          || contact_coupling.tool_force_error(rhs, target_load, reference)
+          || model->contact().tool_force_error(rhs, target_load, reference)
                <= parameters.newton.tool_force_tolerance;
       return measures;
     }
@@ -285,12 +205,12 @@ namespace deepdraw
     {
       // The out-of-balance forces of all equations, in N (free
       // displacement rows, r F_sup, tool equations).
-      const Vector<double> &rhs           = linear_system->rhs();
+      const Vector<double> &rhs           = model->linear_system().rhs();
       Vector<double>        free_residual = rhs;
-      constraints.homogeneous().set_zero(free_residual);
+      model->constraints().homogeneous().set_zero(free_residual);
       const double force
-        = block_norm(free_residual, discretisation.n_displacement_dofs());
-      const double contact_force = contact_coupling.residual_norm(rhs);
+        = block_norm(free_residual, model->sheet().n_displacement_dofs());
+      const double contact_force = model->contact().residual_norm(rhs);
       return std::sqrt(force * force + contact_force * contact_force);
     }
 
@@ -305,7 +225,7 @@ namespace deepdraw
     double
     FormingProblem::correction_norm(const Vector<double> &correction) const
     {
-      return block_norm(correction, discretisation.n_displacement_dofs());
+      return block_norm(correction, model->sheet().n_displacement_dofs());
     }
 
 
@@ -316,8 +236,8 @@ namespace deepdraw
       // Against the displacement so far, not the increment alone: on tiny
       // increments (cut-backs) a 1e-6 mm correction of a slipping flange is
       // not a lack of convergence (doc/decisions.md D26).
-      const types::global_dof_index n_u = discretisation.n_displacement_dofs();
-      Vector<double>                displacement = committed.total_displacement;
+      const types::global_dof_index n_u = model->sheet().n_displacement_dofs();
+      Vector<double>                displacement = model->state().total_displacement;
       for (types::global_dof_index i = 0; i < n_u; ++i)
         displacement[i] += x[i];
       const double displacement_norm
@@ -331,7 +251,7 @@ namespace deepdraw
                                      const solver::ResidualMeasures &residuals,
                                      const double relative_correction)
     {
-      newton_log.add(committed.increment_number
+      newton_log.add(model->state().increment_number
                        + (progress.reequilibrating ? 0 : 1),
                      target_load,
                      iterations,

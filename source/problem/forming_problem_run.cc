@@ -6,13 +6,12 @@
 #include <algorithm>
 #include <cmath>
 #include <deepdraw/io/input_error.h>
+#include <deepdraw/problem/console_report.h>
 #include <deepdraw/problem/forming_problem.h>
 #include <deepdraw/state/checkpoint.h>
 #include <deepdraw/state/stop_request.h>
 #include <filesystem>
-#include <iomanip>
 #include <iostream>
-#include <sstream>
 
 namespace deepdraw
 {
@@ -20,23 +19,6 @@ namespace deepdraw
   {
     namespace
     {
-      std::string
-      format_load(const double load)
-      {
-        std::ostringstream text;
-        text << std::setprecision(6) << load;
-        return text.str();
-      }
-
-      std::string
-      format_seconds(const double seconds)
-      {
-        std::ostringstream text;
-        text << std::fixed << std::setprecision(seconds < 100. ? 1 : 0)
-             << seconds << " s";
-        return text.str();
-      }
-
       bool
       is_landing(const std::vector<double> &loads, const double load)
       {
@@ -55,38 +37,32 @@ namespace deepdraw
     {
       if (options.resume)
         restore_checkpoint();
-      else if (contact_coupling.active())
-      {
-        contact_coupling.start_increment(0., 0.);
-        // Tool placement, contact fields and states of the initial state;
-        // a tool inside the blank or turned away from it is an input error
-        // (D56), found before anything is written.
-        assemble(newton_unknowns, constraints.homogeneous(), false);
-        contact_coupling.check_initial_placement(
-          discretisation.triangulation().get_vertices(),
-          parameters.geometry.thickness);
-        const unsigned int penetrating
-          = contact_coupling.n_initial_penetrations(
-            discretisation.triangulation().get_vertices());
-        if (penetrating > 0 && !options.quiet)
-          std::cout << "deepdraw: " << penetrating
-                    << " sheet nodes start inside a tool; the first "
-                       "increment pushes them out"
-                    << std::endl;
-        contact_coupling.commit(newton_unknowns);
-        committed.contact = contact_coupling.committed_history();
-      }
-      // A failure to open the outputs is an input error (exit code 2, D11),
-      // after which nothing may be left behind: a directory made here is
-      // removed again.
+      else if (const unsigned int penetrating = model->place_tools();
+               penetrating > 0 && !options.quiet)
+        std::cout << "deepdraw: " << penetrating
+                  << " sheet nodes start inside a tool; the first "
+                     "increment pushes them out"
+                  << std::endl;
+      open_outputs(options.resume);
+      if (!options.resume)
+        postprocessors.execute(*view);
+      table_sizes = state::csv_table_sizes(parameters.output.output_directory);
+    }
+
+
+    void
+    FormingProblem::open_outputs(const bool resume)
+    {
+      // A failure here is an input error (exit code 2, D11), after which
+      // nothing may be left behind: a directory made here is removed again.
       const std::string &directory = parameters.output.output_directory;
       const bool         existed   = std::filesystem::exists(directory);
       try
       {
         std::filesystem::create_directories(directory);
-        postprocessors.start(*this, options.resume);
-        newton_log.open(directory, options.resume);
-        adaptation->open(directory, options.resume);
+        postprocessors.start(*view, resume);
+        newton_log.open(directory, resume);
+        adaptation->open(directory, resume);
       }
       catch (const std::exception &error)
       {
@@ -100,69 +76,51 @@ namespace deepdraw
         throw InputError("Output/Output directory: cannot write results to '"
                          + directory + "': " + error.what());
       }
-      if (!options.resume)
-        postprocessors.execute(*this);
-      table_sizes = state::csv_table_sizes(directory);
     }
 
 
     void
     FormingProblem::run(const RunOptions &options)
     {
-      RunProgress run;
-      run.quiet = options.quiet;
+      ConsoleReport console(options.quiet);
       start_run(options);
-      run.first_load = committed.load;
-      if (!options.quiet)
-        std::cout << "deepdraw: "
-                  << discretisation.triangulation().n_active_cells()
-                  << " cells, " << discretisation.n_displacement_dofs()
-                  << " displacement unknowns, "
-                  << newton_unknowns.size()
-                       - discretisation.n_displacement_dofs()
-                  << " contact unknowns, "
-                  << fe::to_string(parameters.element.technology) << " element"
-                  << (options.resume
-                        ? ", resumed at load " + format_load(committed.load)
-                        : std::string())
-                  << std::endl;
+      console.model(*view,
+                    model->n_unknowns(),
+                    fe::to_string(parameters.element.technology),
+                    options.resume);
+      const state::SimulationState &committed = model->state();
       while (true)
       {
         if (!committed.stage_completed)
         {
-          run_stage(run);
+          run_stage(console);
           end_stage();
         }
         if (committed.stage + 1 >= parameters.stages.size())
           break;
         begin_stage(committed.stage + 1);
-        if (!options.quiet)
-          std::cout << "deepdraw: stage " << committed.stage + 1 << " '"
-                    << stage().name << "' (" << process::to_string(stage().kind)
-                    << ") from load " << format_load(stage().start_load)
-                    << " to " << format_load(stage().end_load) << std::endl;
+        console.stage(*view);
       }
-      std::cout << "deepdraw: finished at load " << format_load(committed.load)
-                << " after " << committed.increment_number << " increments in "
-                << format_seconds(wall_timer.wall_time()) << "; results in "
-                << parameters.output.output_directory << std::endl;
+      console.finished(*view, wall_timer.wall_time());
     }
 
 
     void
-    FormingProblem::run_stage(const RunProgress &run)
+    FormingProblem::run_stage(const ConsoleReport &console)
     {
-      std::vector<double> landings;
-      for (const double load : postprocessors.requested_loads(*this))
-        if (load > stage().start_load && load < stage().end_load)
+      state::SimulationState &committed = model->state();
+      const process::Stage   &stage = model->stage();
+      std::vector<double>     landings;
+      for (const double load : postprocessors.requested_loads(*view))
+        if (load > stage.start_load && load < stage.end_load)
           landings.push_back(load);
-      solver::IncrementControl control(stage().load_stepping, landings);
+      solver::IncrementControl control(stage.load_stepping, landings);
       control.restore({committed.load, committed.next_increment});
       // The times of an increment include its failed attempts (cut-backs):
       // they are reset only once it has converged.
       progress.assembly_time = progress.solve_time = 0.;
-      double search_time_before = contact_coupling.search_time();
-      increment_timer.restart();
+      double search_time_before = model->contact().search_time();
+      run_record.increment_timer.restart();
       while (!control.finished())
       {
         if (const int signal_number = state::requested_stop_signal())
@@ -175,15 +133,12 @@ namespace deepdraw
         if (solve_checked_increment(old_load, new_load, iterations, reason)
             != IncrementOutcome::converged)
         {
-          if (!run.quiet)
-            std::cout << "  load " << format_load(new_load) << ": " << reason
-                      << ", cutting the increment back" << std::endl;
-          trial_history             = committed.history;
-          trial_enhanced_parameters = committed.enhanced_parameters;
+          console.cut_back(new_load, reason);
+          model->restore_trial_state();
           if (!control.cut_back())
           {
             const bool too_small = control.next_increment()
-                                   < stage().load_stepping.minimum_increment;
+                                   < stage.load_stepping.minimum_increment;
             stop_cleanly(
               "the increment from load " + format_load(old_load) + " to "
               + format_load(new_load) + " failed (" + reason + ") after "
@@ -198,49 +153,65 @@ namespace deepdraw
 
         const unsigned int cut_backs = control.cut_backs_of_current_increment();
         control.accept(iterations);
-        commit_increment();
+        model->commit(newton_unknowns, start_load, target_load);
         ++committed.increment_number;
         committed.next_increment = control.state().increment;
-        report.search_time
-          = contact_coupling.search_time() - search_time_before;
-        at_stage_end = control.finished();
-        at_landing   = at_stage_end || is_landing(landings, new_load);
-        report_increment(new_load - old_load, iterations, cut_backs, run);
+        run_record.report.search_time
+          = model->contact().search_time() - search_time_before;
+        run_record.at_stage_end = control.finished();
+        run_record.at_landing
+          = control.finished() || is_landing(landings, new_load);
+        report_increment(new_load - old_load, iterations, cut_backs);
+        console.increment(*view, iterations, cut_backs);
 
-        // Adaptive refinement and re-equilibration at this load (D80).
+        // Adaptive refinement and re-equilibration at this load (D80), not
+        // after the last increment of the run.
         const bool last = control.finished()
                           && committed.stage + 1 == parameters.stages.size();
         const std::size_t refinements = adaptation->records().size();
         if (!adapt_mesh(last, reason))
           stop_cleanly("the re-equilibration after refining the mesh at load "
-                       + format_load(committed.load) + " failed (" + reason
-                       + ")");
-        if (!run.quiet && adaptation->records().size() > refinements)
-          std::cout << "  refined to "
-                    << discretisation.triangulation().n_active_cells()
-                    << " cells, re-equilibrated in "
-                    << adaptation->records().back().iterations
-                    << " iteration(s)" << std::endl;
-        table_sizes
-          = state::csv_table_sizes(parameters.output.output_directory);
+                       + format_load(committed.load) + " failed (" + reason + ")");
+        if (adaptation->records().size() > refinements)
+          console.refined(model->sheet().triangulation().n_active_cells(),
+                          adaptation->records().back().iterations);
+        table_sizes = state::csv_table_sizes(parameters.output.output_directory);
         if (parameters.checkpoint.interval > 0
             && committed.increment_number % parameters.checkpoint.interval == 0)
           save_checkpoint();
         progress.assembly_time = progress.solve_time = 0.;
-        search_time_before = contact_coupling.search_time();
-        increment_timer.restart();
+        search_time_before = model->contact().search_time();
+        run_record.increment_timer.restart();
       }
+    }
+
+
+    void
+    FormingProblem::begin_stage(const unsigned int index)
+    {
+      try
+      {
+        model->begin_stage(index);
+      }
+      catch (const InputError &error)
+      {
+        stop_cleanly("stage " + std::to_string(index + 1) + " '"
+                     + parameters.stages[index].name
+                     + "' cannot begin: " + error.what());
+      }
+      newton_unknowns = model->state().converged_solution;
+      postprocessors.initialize(*view);
     }
 
 
     void
     FormingProblem::end_stage()
     {
-      postprocessors.end_stage(*this);
-      committed.stage_completed = true;
+      postprocessors.end_stage(*view);
+      model->state().stage_completed = true;
       table_sizes = state::csv_table_sizes(parameters.output.output_directory);
       // A later run can begin the next stage from here (D101).
-      if (committed.stage + 1 < parameters.stages.size())
+      if (model->state().stage + 1 < parameters.stages.size())
         save_checkpoint();
     }
 
@@ -251,26 +222,24 @@ namespace deepdraw
                                             unsigned int &iterations,
                                             std::string  &reason)
     {
+      const contact::ContactCoupling &contact = model->contact();
       // A tool that moves farther than the search distance in one
       // increment can pass through the sheet unseen (D56).
-      reason = contact_coupling.active()
-                 ? contact_coupling.check_tool_motion(old_load, new_load)
-                 : std::string();
+      reason = contact.active() ? contact.check_tool_motion(old_load, new_load)
+                                : std::string();
       if (!reason.empty())
         return IncrementOutcome::diverged;
       const IncrementOutcome outcome
         = solve_increment(old_load, new_load, iterations);
       reason = solver::describe(outcome);
-      if (outcome != IncrementOutcome::converged || !contact_coupling.active())
+      if (outcome != IncrementOutcome::converged || !contact.active())
         return outcome;
-      reason = contact_coupling.check_tool_sides(
-        discretisation.triangulation().get_vertices(),
-        newton_unknowns,
-        parameters.geometry.thickness);
+      reason
+        = contact.check_tool_sides(model->sheet().triangulation().get_vertices(),
+                                   newton_unknowns,
+                                   parameters.geometry.thickness);
       if (reason.empty())
-        reason = contact_coupling.check_tool_motion(old_load,
-                                                    new_load,
-                                                    newton_unknowns);
+        reason = contact.check_tool_motion(old_load, new_load, newton_unknowns);
       return reason.empty() ? outcome : IncrementOutcome::diverged;
     }
 
@@ -278,49 +247,25 @@ namespace deepdraw
     void
     FormingProblem::report_increment(const double       load_increment,
                                      const unsigned int iterations,
-                                     const unsigned int cut_backs,
-                                     const RunProgress &run)
+                                     const unsigned int cut_backs)
     {
       const solver::LinearSolver::Statistics solver_statistics
-        = linear_system->statistics();
-      report.load_increment      = load_increment;
-      report.iterations          = iterations;
-      report.cut_backs           = cut_backs;
-      report.force_residual      = progress.last_force_residual();
-      report.contact_residual    = progress.last_contact_residual();
-      report.plastic_points      = progress.plastic_points;
-      report.contact_changes     = progress.contact_changes;
-      report.assembly_time       = progress.assembly_time;
-      report.solve_time          = progress.solve_time;
+        = model->linear_system().statistics();
+      postprocess::IncrementReport &report = run_record.report;
+      report.load_increment                = load_increment;
+      report.iterations                    = iterations;
+      report.cut_backs                     = cut_backs;
+      report.force_residual                = progress.last_force_residual();
+      report.contact_residual              = progress.last_contact_residual();
+      report.plastic_points                = progress.plastic_points;
+      report.contact_changes               = progress.contact_changes;
+      report.assembly_time                 = progress.assembly_time;
+      report.solve_time                    = progress.solve_time;
       report.factorized_unknowns = solver_statistics.factorized_unknowns;
       report.symbolic_analyses   = solver_statistics.symbolic_analyses
                                  - reported_solver_statistics.symbolic_analyses;
       reported_solver_statistics = solver_statistics;
-      postprocessors.execute(*this);
-      if (run.quiet)
-        return;
-
-      // Remaining time: the load still to go at the mean rate of this run
-      // so far.
-      const double elapsed = run.timer.wall_time();
-      const double done    = committed.load - run.first_load;
-      const double remaining
-        = done > 0. ? elapsed / done * (final_load() - committed.load) : 0.;
-      std::ostringstream line;
-      line << "increment " << std::setw(4) << committed.increment_number
-           << "  load " << std::setw(9) << format_load(committed.load)
-           << "  iterations " << std::setw(2) << iterations << "  cut-backs "
-           << cut_backs << std::scientific << std::setprecision(2)
-           << "  residuals " << report.force_residual << " "
-           << report.contact_residual << std::defaultfloat
-           << "  plastic points " << report.plastic_points;
-      if (contact_coupling.active())
-        line << "  stick/slip " << contact_coupling.n_stick() << "/"
-             << contact_coupling.n_slip();
-      line << std::fixed << std::setprecision(3) << "  time "
-           << increment_wall_time() << " s  elapsed " << format_seconds(elapsed)
-           << "  remaining ~" << format_seconds(remaining);
-      std::cout << line.str() << std::endl;
+      postprocessors.execute(*view);
     }
 
 
@@ -328,7 +273,7 @@ namespace deepdraw
     FormingProblem::stop_cleanly(const std::string &reason)
     {
       std::string where = "; the results up to load "
-                          + format_load(committed.load) + " are in "
+                          + format_load(model->state().load) + " are in "
                           + parameters.output.output_directory;
       try
       {

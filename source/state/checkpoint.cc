@@ -300,6 +300,40 @@ namespace deepdraw
     }
 
 
+    void
+    check_resumable(const Checkpoint  &checkpoint,
+                    const std::string &filename,
+                    const std::string &listing,
+                    const std::string &defaults,
+                    const unsigned int n_stages)
+    {
+      const unsigned int stage = checkpoint.state.stage;
+      if (stage >= n_stages)
+        throw InputError("--resume: " + filename + " was written in stage "
+                         + std::to_string(stage + 1)
+                         + ", but the process has "
+                         + std::to_string(n_stages) + " stage(s)");
+      const std::vector<std::string> changes
+        = changed_model_parameters(checkpoint.parameters,
+                                   listing,
+                                   defaults,
+                                   stage);
+      if (changes.empty())
+        return;
+      std::ostringstream message;
+      message << "--resume: " << filename
+              << " was written for another model; changed parameters:";
+      for (const std::string &change : changes)
+        message << "\n  " << change;
+      message << "\n(only the subsections Output and Checkpoint, the "
+                 "stopping parameters Process/Final load, Load stepping/"
+                 "Minimum increment and Load stepping/Maximum cut-backs, "
+                 "and the stages after the checkpoint's may change on a "
+                 "resume)";
+      throw InputError(message.str());
+    }
+
+
     std::vector<std::pair<std::string, std::uintmax_t>>
     csv_table_sizes(const std::string &directory)
     {

@@ -1,36 +1,25 @@
 // The forming problem (doc/architecture.md): the stages of the process, the
-// increments of each, and the Newton iterations of each increment through
-// the solver::NewtonSystem this class implements. It owns the model (the
-// sheet's discretisation, the contact coupling, the Newton system, the
-// committed state) and hands it to the post-processors read-only
-// (postprocess::SimulationAccess).
-//
-// Unknowns are ordered in blocks: displacements first, then the contact
-// forces and the tool positions of force-controlled tools, all in one
-// unsymmetric system (doc/theory.md §7).
+// increments of each with their load stepping, and the Newton iterations of
+// each increment through the solver::NewtonSystem this class implements, on
+// the model of SheetModel; after every converged increment the
+// post-processors read the model through SimulationView.
 #ifndef deepdraw_problem_forming_problem_h
 #define deepdraw_problem_forming_problem_h
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 #include <deepdraw/adaptivity/mesh_adaptation.h>
-#include <deepdraw/contact/contact_coupling.h>
-#include <deepdraw/discretisation/newton_constraints.h>
-#include <deepdraw/discretisation/sheet_discretisation.h>
-#include <deepdraw/discretisation/thickness_measurement.h>
-#include <deepdraw/fe/hexahedron_element.h>
-#include <deepdraw/linear_algebra/newton_linear_system.h>
-#include <deepdraw/material/hill_plasticity.h>
 #include <deepdraw/postprocess/manager.h>
-#include <deepdraw/postprocess/simulation_access.h>
+#include <deepdraw/problem/console_report.h>
 #include <deepdraw/problem/model_parameters.h>
 #include <deepdraw/problem/newton_log.h>
-#include <deepdraw/solver/increment_control.h>
+#include <deepdraw/problem/sheet_model.h>
+#include <deepdraw/problem/simulation_view.h>
 #include <deepdraw/solver/newton_increment.h>
-#include <deepdraw/state/simulation_state.h>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace deepdraw
@@ -55,8 +44,7 @@ namespace deepdraw
       bool quiet = false;
     };
 
-    class FormingProblem : private solver::NewtonSystem,
-                           private postprocess::SimulationAccess
+    class FormingProblem : private solver::NewtonSystem
     {
     public:
       static void
@@ -80,16 +68,16 @@ namespace deepdraw
       const postprocess::SimulationAccess &
       access() const;
 
-      // For tests: sets the prescribed displacements and the tool positions
-      // of the increment [old_load, new_load] as an increment does, so that
+      // For tests: the prescribed increments and tool positions of the
+      // increment [old_load, new_load], as an increment sets them, so that
       // evaluate_residual() sees the same equations.
       void
       prepare_increment(double old_load, double new_load);
       // The residual r(x) of all equations (displacement rows f_int - P,
-      // contact rows F_sup, tool rows) for the Newton unknowns x (see
-      // SimulationState::converged_solution), measured from the current
+      // contact rows F_sup, tool rows) for the Newton unknowns x (as
+      // SimulationState::converged_solution), from the current
       // configuration and committed history, without constraints; with
-      // tangent != nullptr also dr/dx. Returns false if a point failed.
+      // tangent != nullptr also dr/dx. False if a point failed.
       bool
       evaluate_residual(const Vector<double> &unknowns,
                         Vector<double>       &residual,
@@ -111,41 +99,18 @@ namespace deepdraw
     private:
       using IncrementOutcome = solver::IncrementOutcome;
 
-      // Set-up (forming_problem.cc).
-      // The Newton system of the current mesh and stage: the contact pairs
-      // of the tools that take part, the constraints, the linear system,
-      // the thickness measurement; the post-processors set up again.
-      void
-      set_up_system();
-      // The initial state on the blank's mesh.
-      void
-      initialize_state();
-      // Stage `index` begins (not the first): the tools and constraints of
-      // the stage, the contact state carried over (D101).
-      void
-      begin_stage(unsigned int index);
-      const process::Stage &
-      stage() const;
-      // The committed state of a converged increment.
-      void
-      commit_increment();
-      // Adds the displacement block of newton_unknowns to the total
-      // displacement and moves the mesh by it (updated Lagrangian).
-      void
-      move_mesh();
-
-      // The run (forming_problem_run.cc), as the console reports it: since
-      // when, from which load, and whether a line per increment.
-      struct RunProgress
-      {
-        Timer  timer;
-        bool   quiet      = false;
-        double first_load = 0.;
-      };
+      // The run (forming_problem_run.cc).
       void
       start_run(const RunOptions &options);
+      // Opens the outputs; a failure is an input error, the directory made
+      // for them removed again.
       void
-      run_stage(const RunProgress &run);
+      open_outputs(bool resume);
+      void
+      run_stage(const ConsoleReport &console);
+      // Stage `index` begins, or the run stops cleanly if it cannot.
+      void
+      begin_stage(unsigned int index);
       void
       end_stage();
       // solve_increment() and the checks that no tool passed through the
@@ -155,20 +120,20 @@ namespace deepdraw
                               double        new_load,
                               unsigned int &iterations,
                               std::string  &reason);
-      // The outputs of a converged increment and its console line.
+      // The post-processors of a converged increment.
       void
-      report_increment(double             load_increment,
-                       unsigned int       iterations,
-                       unsigned int       cut_backs,
-                       const RunProgress &run);
+      report_increment(double       load_increment,
+                       unsigned int iterations,
+                       unsigned int cut_backs);
       // Writes a checkpoint of the last converged state and throws
       // RunFailure(reason).
       [[noreturn]] void
       stop_cleanly(const std::string &reason);
       void
       save_checkpoint() const;
-      // The checkpoint of the output directory: the stage's set-up, the
-      // state, the output tables cut back to their sizes then.
+      // The checkpoint of the output directory: checked against the
+      // parameters, the model restored, the tables cut back to their
+      // sizes then (forming_problem_checkpoint.cc).
       void
       restore_checkpoint();
       // Adaptive refinement after a converged increment (D80): false if
@@ -184,11 +149,10 @@ namespace deepdraw
       solve_increment(double        old_load,
                       double        new_load,
                       unsigned int &iterations);
-      // Trial element-internal unknowns: the committed ones times ratio.
+      // The unknowns of the increment's start: du = 0, contact forces and
+      // tool positions converged.
       void
-      start_enhanced_parameters(double ratio);
-      // Assembles f_int, the residual (rhs = -r on free dofs) and, if
-      // requested, the tangent at the unknowns; trial history from du.
+      start_from_converged_state();
       IncrementOutcome
       assemble(const Vector<double>            &unknowns,
                const AffineConstraints<double> &constraints,
@@ -218,87 +182,30 @@ namespace deepdraw
                        const solver::ResidualMeasures &residuals,
                        double relative_correction) override;
 
-      // postprocess::SimulationAccess (forming_problem_access.cc).
-      const blank::BlankGeometry &
-      blank() const override;
-      const discretisation::SheetDiscretisation &
-      sheet() const override;
-      const discretisation::ThicknessMeasurement &
-      thickness() const override;
-      const material::HillPlasticity &
-      material() const override;
-      const contact::ContactCoupling &
-      contact() const override;
-      const state::SimulationState &
-      state() const override;
-      const Vector<double> &
-      internal_force() const override;
-      const std::vector<unsigned int> &
-      reaction_faces() const override;
-      const std::vector<process::Stage> &
-      stages() const override;
-      unsigned int
-      stage_index() const override;
-      bool
-      stage_finished() const override;
-      bool
-      landed() const override;
-      double
-      final_load() const override;
-      const postprocess::IncrementReport &
-      increment_report() const override;
-      double
-      increment_wall_time() const override;
-      double
-      output_time() const override;
-      const std::string &
-      output_directory() const override;
-
       // Wall time since the problem was constructed: the reported run time
       // includes the set-up (mesh, tools, pairs), which a tool of many
       // patches makes long.
       Timer wall_timer;
 
-      ModelParameters                                     parameters;
-      std::unique_ptr<material::HillPlasticity>           material_model;
-      std::unique_ptr<fe::HexahedronElement>              element;
-      discretisation::SheetDiscretisation                 discretisation;
-      discretisation::ThicknessMeasurement                thickness_measurement;
-      discretisation::NewtonConstraints                   constraints;
-      contact::ContactCoupling                            contact_coupling;
-      std::unique_ptr<linear_algebra::NewtonLinearSystem> linear_system;
-      // The faces with a prescribed displacement in some stage.
-      std::vector<unsigned int> faces_with_reactions;
+      ModelParameters                             parameters;
+      std::unique_ptr<SheetModel>                 model;
+      postprocess::Manager                        postprocessors;
+      NewtonLog                                   newton_log;
+      std::unique_ptr<adaptivity::MeshAdaptation> adaptation;
+      RunRecord                                   run_record;
+      std::unique_ptr<SimulationView>             view;
 
-      // What a restart or a mesh change must carry (committed when an
-      // increment converges), and the trial values of the increment being
-      // solved (restored from it on a cut-back).
-      state::SimulationState                  committed;
-      std::vector<fe::QuadraturePointHistory> trial_history;
-      std::vector<fe::EnhancedParameters>     trial_enhanced_parameters;
-
-      // The increment being solved: its Newton unknowns [du | lambda | z]
-      // (du first, then contact forces and tool positions), its loads, the
-      // internal forces of the last assembly and its progress.
+      // The increment being solved: its Newton unknowns [du | lambda | z],
+      // its loads and the progress of its Newton iterations.
       Vector<double> newton_unknowns;
-      Vector<double> internal_forces;
       double         start_load  = 0.;
       double         target_load = 0.;
       NewtonProgress progress;
-      // The run's figures.
-      postprocess::IncrementReport     report;
+      // The linear solver's counts at the last row of statistics.csv.
       solver::LinearSolver::Statistics reported_solver_statistics;
-      Timer                            increment_timer;
-      // The last increment landed on a requested load / ended its stage.
-      bool at_landing   = false;
-      bool at_stage_end = false;
-
       // Sizes of the CSV tables after the last converged increment's rows
       // (a checkpoint leaves out the rows of later failed attempts).
       std::vector<std::pair<std::string, std::uintmax_t>> table_sizes;
-      postprocess::Manager                                postprocessors;
-      NewtonLog                                           newton_log;
-      std::unique_ptr<adaptivity::MeshAdaptation>         adaptation;
     };
   } // namespace problem
 } // namespace deepdraw

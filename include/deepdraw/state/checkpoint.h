@@ -78,6 +78,17 @@ namespace deepdraw
                              const std::string &defaults,
                              unsigned int       stage);
 
+    // Throws InputError naming the checkpoint file if the checkpoint does
+    // not belong to the model of the flattened parameters `listing` (with
+    // their `defaults`) and its n_stages stages: a stage it does not have,
+    // or changed parameters (changed_model_parameters), listed.
+    void
+    check_resumable(const Checkpoint  &checkpoint,
+                    const std::string &filename,
+                    const std::string &listing,
+                    const std::string &defaults,
+                    unsigned int       n_stages);
+
     // Sizes of the *.csv files in directory (names relative to it).
     std::vector<std::pair<std::string, std::uintmax_t>>
     csv_table_sizes(const std::string &directory);

@@ -1,0 +1,77 @@
+// The problem's postprocess::SimulationAccess: the model (SheetModel) as it
+// stands after the last converged increment and the figures of the run
+// (RunRecord), read-only.
+#ifndef deepdraw_problem_simulation_view_h
+#define deepdraw_problem_simulation_view_h
+
+#include <deal.II/base/timer.h>
+#include <deepdraw/postprocess/manager.h>
+#include <deepdraw/postprocess/simulation_access.h>
+#include <deepdraw/problem/sheet_model.h>
+
+namespace deepdraw
+{
+  namespace problem
+  {
+    // What the run knows of its last converged increment.
+    struct RunRecord
+    {
+      postprocess::IncrementReport report;
+      // Since the increment's first attempt began.
+      Timer increment_timer;
+      // It landed on a requested load / ended its stage.
+      bool at_landing   = false;
+      bool at_stage_end = false;
+    };
+
+    class SimulationView : public postprocess::SimulationAccess
+    {
+    public:
+      SimulationView(const SheetModel           &model,
+                     const RunRecord            &run,
+                     const postprocess::Manager &postprocessors);
+
+      const blank::BlankGeometry &
+      blank() const override;
+      const discretisation::SheetDiscretisation &
+      sheet() const override;
+      const discretisation::ThicknessMeasurement &
+      thickness() const override;
+      const material::HillPlasticity &
+      material() const override;
+      const contact::ContactCoupling &
+      contact() const override;
+      const state::SimulationState &
+      state() const override;
+      const Vector<double> &
+      internal_force() const override;
+      const std::vector<unsigned int> &
+      reaction_faces() const override;
+      const std::vector<process::Stage> &
+      stages() const override;
+      unsigned int
+      stage_index() const override;
+      bool
+      stage_finished() const override;
+      bool
+      landed() const override;
+      double
+      final_load() const override;
+      const postprocess::IncrementReport &
+      increment_report() const override;
+      double
+      increment_wall_time() const override;
+      double
+      output_time() const override;
+      const std::string &
+      output_directory() const override;
+
+    private:
+      const SheetModel           &model;
+      const RunRecord            &run;
+      const postprocess::Manager &postprocessors;
+    };
+  } // namespace problem
+} // namespace deepdraw
+
+#endif

@@ -1,0 +1,134 @@
+#include <deepdraw/problem/simulation_view.h>
+
+namespace deepdraw
+{
+  namespace problem
+  {
+    SimulationView::SimulationView(const SheetModel           &model,
+                                   const RunRecord            &run,
+                                   const postprocess::Manager &postprocessors)
+        : model(model)
+        , run(run)
+        , postprocessors(postprocessors)
+    {}
+
+
+    const blank::BlankGeometry &
+    SimulationView::blank() const
+    {
+      return model.model_parameters().geometry;
+    }
+
+
+    const discretisation::SheetDiscretisation &
+    SimulationView::sheet() const
+    {
+      return model.sheet();
+    }
+
+
+    const discretisation::ThicknessMeasurement &
+    SimulationView::thickness() const
+    {
+      return model.thickness();
+    }
+
+
+    const material::HillPlasticity &
+    SimulationView::material() const
+    {
+      return model.material();
+    }
+
+
+    const contact::ContactCoupling &
+    SimulationView::contact() const
+    {
+      return model.contact();
+    }
+
+
+    const state::SimulationState &
+    SimulationView::state() const
+    {
+      return model.state();
+    }
+
+
+    const Vector<double> &
+    SimulationView::internal_force() const
+    {
+      return model.internal_force();
+    }
+
+
+    const std::vector<unsigned int> &
+    SimulationView::reaction_faces() const
+    {
+      return model.reaction_faces();
+    }
+
+
+    const std::vector<process::Stage> &
+    SimulationView::stages() const
+    {
+      return model.model_parameters().stages;
+    }
+
+
+    unsigned int
+    SimulationView::stage_index() const
+    {
+      return model.state().stage;
+    }
+
+
+    bool
+    SimulationView::stage_finished() const
+    {
+      return run.at_stage_end;
+    }
+
+
+    bool
+    SimulationView::landed() const
+    {
+      return run.at_landing;
+    }
+
+
+    double
+    SimulationView::final_load() const
+    {
+      return stages().back().end_load;
+    }
+
+
+    const postprocess::IncrementReport &
+    SimulationView::increment_report() const
+    {
+      return run.report;
+    }
+
+
+    double
+    SimulationView::increment_wall_time() const
+    {
+      return run.increment_timer.wall_time();
+    }
+
+
+    double
+    SimulationView::output_time() const
+    {
+      return postprocessors.output_time();
+    }
+
+
+    const std::string &
+    SimulationView::output_directory() const
+    {
+      return model.model_parameters().output.output_directory;
+    }
+  } // namespace problem
+} // namespace deepdraw
