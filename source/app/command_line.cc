@@ -3,9 +3,11 @@
 // input, the run, and the exit code of every outcome (§5). A function so
 // that the hostile-input tests (tests/input/) can run hundreds of cases in
 // one process.
+#include <algorithm>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deepdraw/app/command_line.h>
+#include <deepdraw/app/commands.h>
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/io/output_error.h>
 #include <deepdraw/io/parameter_file.h>
@@ -79,6 +81,11 @@ namespace deepdraw
     int
     run_command_line(const std::vector<std::string> &arguments)
     {
+      if (!arguments.empty() && arguments[0] == "--write-square-cup-tools")
+        return write_square_cup_tools(arguments);
+      if (std::find(arguments.begin(), arguments.end(), "--study")
+          != arguments.end())
+        return run_study_command(arguments);
       std::string         prm_file, output_directory;
       bool                check_only = false, output_directory_given = false;
       problem::RunOptions options;

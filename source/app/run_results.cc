@@ -2,6 +2,7 @@
 // D42).
 #include <cmath>
 #include <deepdraw/app/run_results.h>
+#include <deepdraw/postprocess/table_names.h>
 #include <fstream>
 #include <iomanip>
 #include <regex>
@@ -106,8 +107,8 @@ namespace deepdraw
         const std::optional<Table> table = read_table(filename);
         if (!table)
           return;
-        const int c_s0 = table->column("s0_mm");
-        const int c_e  = table->column("thickness_strain");
+        const int c_s0 = table->column(postprocess::tables::profile_distance);
+        const int c_e  = table->column(postprocess::tables::thickness_strain);
         if (c_s0 < 0 || c_e < 0)
           return;
         for (const std::vector<double> &row : table->rows)
@@ -147,8 +148,9 @@ namespace deepdraw
           return;
         results.increments = table->rows.size();
         const std::pair<const char *, OptionalValue *> sums[]
-          = {{"newton_iterations", &results.newton_iterations},
-             {"cut_backs", &results.cut_backs}};
+          = {{postprocess::tables::newton_iterations.c_str(),
+              &results.newton_iterations},
+             {postprocess::tables::cut_backs.c_str(), &results.cut_backs}};
         for (const auto &[name, sum] : sums)
         {
           const int c = table->column(name);
@@ -162,16 +164,6 @@ namespace deepdraw
     } // namespace
 
 
-    std::string
-    travel_label(const double travel)
-    {
-      // As FormingProblem::write_thickness_profiles names the files.
-      std::ostringstream label;
-      label << std::setprecision(10) << travel;
-      return label.str();
-    }
-
-
     RunResults
     read_run_results(const std::string              &directory,
                      const std::vector<double>      &travels,
@@ -179,21 +171,30 @@ namespace deepdraw
     {
       RunResults results;
       read_mesh_size(directory + "/deepdraw.log", results);
-      read_cost(directory + "/statistics.csv", results);
+      read_cost(directory + "/" + postprocess::tables::statistics, results);
 
       const std::optional<Table> punch
-        = read_table(directory + "/punch_force.csv");
+        = read_table(directory + "/" + postprocess::tables::punch_force_table);
       const std::optional<Table> draw_in
-        = read_table(directory + "/draw_in.csv");
+        = read_table(directory + "/" + postprocess::tables::draw_in_table);
       for (const double travel : travels)
       {
         TravelResults at;
-        at.punch_force = value_at(punch, "punch_force_N", travel);
+        at.punch_force
+          = value_at(punch, postprocess::tables::punch_force, travel);
         for (const std::string &name : draw_in_names)
-          at.draw_in.push_back(value_at(draw_in, name + "_mm", travel));
-        const std::string suffix = "_" + travel_label(travel) + "mm.csv";
-        read_peak(directory + "/thickness_OX" + suffix, at.ox_strain, at.ox_s0);
-        read_peak(directory + "/thickness_OD" + suffix, at.od_strain, at.od_s0);
+          at.draw_in.push_back(
+            value_at(draw_in,
+                     name + postprocess::tables::draw_in_suffix,
+                     travel));
+        read_peak(directory + "/"
+                    + postprocess::thickness_profile_file("OX", travel),
+                  at.ox_strain,
+                  at.ox_s0);
+        read_peak(directory + "/"
+                    + postprocess::thickness_profile_file("OD", travel),
+                  at.od_strain,
+                  at.od_s0);
         results.travels.push_back(at);
       }
       return results;

@@ -6,6 +6,7 @@
 #include <deepdraw/app/study_plot.h>
 #include <deepdraw/app/study_run.h>
 #include <deepdraw/app/study_table.h>
+#include <deepdraw/postprocess/table_names.h>
 #include <fstream>
 #include <sstream>
 
@@ -51,9 +52,10 @@ namespace deepdraw
              {"cut-backs", {{"cut_backs", ""}}},
              {"wall time (s)", {{"wall_s", ""}}}};
         std::vector<std::pair<std::string, std::string>> quantities
-          = {{"punch_force_N", "punch force (N)"}};
+          = {{postprocess::tables::punch_force, "punch force (N)"}};
         for (const std::string &point : spec.draw_in_names)
-          quantities.emplace_back(point + "_mm", point + " draw-in (mm)");
+          quantities.emplace_back(point + postprocess::tables::draw_in_suffix,
+                                  point + " draw-in (mm)");
         quantities.insert(quantities.end(),
                           {{"OX_thinning", "OX: smallest ln(t/t0)"},
                            {"OX_thinning_s0_mm", "OX: its s0 (mm)"},
@@ -63,8 +65,9 @@ namespace deepdraw
         // more than a refinement changes them.
         for (const auto &[quantity, title] : quantities)
           for (const double travel : spec.travels)
-            panels.push_back({title + " at " + travel_label(travel) + " mm",
-                              {{StudyTable::at_travel(quantity, travel), ""}}});
+            panels.push_back(
+              {title + " at " + postprocess::travel_label(travel) + " mm",
+               {{StudyTable::at_travel(quantity, travel), ""}}});
         return panels;
       }
 

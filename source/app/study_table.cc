@@ -1,5 +1,6 @@
 // study.csv (doc/user_guide.md §4.2, doc/decisions.md D43).
 #include <deepdraw/app/study_table.h>
+#include <deepdraw/postprocess/table_names.h>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
@@ -39,7 +40,7 @@ namespace deepdraw
     std::string
     StudyTable::at_travel(const std::string &quantity, const double travel)
     {
-      return quantity + "_" + travel_label(travel) + "mm";
+      return quantity + "_" + postprocess::travel_label(travel) + "mm";
     }
 
 
@@ -60,9 +61,9 @@ namespace deepdraw
                                  "cut_backs",
                                  "wall_s"})
         column_names.emplace_back(column);
-      std::vector<std::string> quantities = {"punch_force_N"};
+      std::vector<std::string> quantities = {postprocess::tables::punch_force};
       for (const std::string &point : draw_in_names)
-        quantities.push_back(point + "_mm");
+        quantities.push_back(point + postprocess::tables::draw_in_suffix);
       for (const char *peak : {"OX_thinning",
                                "OX_thinning_s0_mm",
                                "OD_thinning",

@@ -31,7 +31,8 @@ namespace deepdraw
 
     ConsoleReport::ConsoleReport(const bool quiet)
         : quiet(quiet)
-    {}
+    {
+    }
 
 
     void
@@ -85,8 +86,9 @@ namespace deepdraw
     {
       if (quiet)
         return;
-      const state::SimulationState       &state  = simulation.state();
-      const postprocess::IncrementReport &report = simulation.increment_report();
+      const state::SimulationState       &state = simulation.state();
+      const postprocess::IncrementReport &report
+        = simulation.increment_report();
       // Remaining time: the load still to go at the mean rate of this run
       // so far.
       const double elapsed = timer.wall_time();
@@ -125,7 +127,7 @@ namespace deepdraw
 
     void
     ConsoleReport::finished(const postprocess::SimulationAccess &simulation,
-                            const double seconds) const
+                            const double                         seconds) const
     {
       std::cout << "deepdraw: finished at load "
                 << format_load(simulation.state().load) << " after "

@@ -22,7 +22,8 @@ namespace deepdraw
       model = std::make_unique<SheetModel>(prm, parameters, input_directory);
       adaptation
         = std::make_unique<adaptivity::MeshAdaptation>(parameters.adaptivity);
-      view = std::make_unique<SimulationView>(*model, run_record, postprocessors);
+      view
+        = std::make_unique<SimulationView>(*model, run_record, postprocessors);
       newton_unknowns.reinit(model->n_unknowns());
       postprocessors.initialize(*view);
     }

@@ -16,9 +16,9 @@ namespace deepdraw
       checkpoint.state          = model->state();
       checkpoint.table_sizes    = table_sizes;
       checkpoint.postprocessors = postprocessors.save();
-      state::write_checkpoint(
-        state::checkpoint_file(parameters.output.output_directory),
-        checkpoint);
+      state::write_checkpoint(state::checkpoint_file(
+                                parameters.output.output_directory),
+                              checkpoint);
     }
 
 

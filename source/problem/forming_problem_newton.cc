@@ -68,9 +68,9 @@ namespace deepdraw
         const Vector<double> &last     = committed.converged_solution;
         const Vector<double> &previous = committed.previous_converged_solution;
         for (types::global_dof_index i = 0; i < newton_unknowns.size(); ++i)
-          newton_unknowns[i]
-            = i < n_u ? ratio * last[i]
-                      : last[i] + ratio * (last[i] - previous[i]);
+          newton_unknowns[i] = i < n_u
+                                 ? ratio * last[i]
+                                 : last[i] + ratio * (last[i] - previous[i]);
         model->constraints().predictor().distribute(newton_unknowns);
         const IncrementOutcome status = assemble_at(newton_unknowns, false);
         if (status == IncrementOutcome::converged)
@@ -148,12 +148,12 @@ namespace deepdraw
         std::vector<types::global_dof_index> decoupled;
         if (parameters.linear_solver.leave_out_decoupled)
         {
-          decoupled
-            = model->constraints().decoupled_unknowns(model->sheet());
+          decoupled = model->constraints().decoupled_unknowns(model->sheet());
           model->contact().add_open_multipliers(decoupled);
         }
-        model->linear_system().solve(
-          correction, model->contact().tool_position_unknowns(), decoupled);
+        model->linear_system().solve(correction,
+                                     model->contact().tool_position_unknowns(),
+                                     decoupled);
       }
       catch (const std::exception &error)
       {
@@ -237,7 +237,7 @@ namespace deepdraw
       // increments (cut-backs) a 1e-6 mm correction of a slipping flange is
       // not a lack of convergence (doc/decisions.md D26).
       const types::global_dof_index n_u = model->sheet().n_displacement_dofs();
-      Vector<double>                displacement = model->state().total_displacement;
+      Vector<double> displacement       = model->state().total_displacement;
       for (types::global_dof_index i = 0; i < n_u; ++i)
         displacement[i] += x[i];
       const double displacement_norm

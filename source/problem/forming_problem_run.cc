@@ -109,7 +109,7 @@ namespace deepdraw
     FormingProblem::run_stage(const ConsoleReport &console)
     {
       state::SimulationState &committed = model->state();
-      const process::Stage   &stage = model->stage();
+      const process::Stage   &stage     = model->stage();
       std::vector<double>     landings;
       for (const double load : postprocessors.requested_loads(*view))
         if (load > stage.start_load && load < stage.end_load)
@@ -171,11 +171,13 @@ namespace deepdraw
         const std::size_t refinements = adaptation->records().size();
         if (!adapt_mesh(last, reason))
           stop_cleanly("the re-equilibration after refining the mesh at load "
-                       + format_load(committed.load) + " failed (" + reason + ")");
+                       + format_load(committed.load) + " failed (" + reason
+                       + ")");
         if (adaptation->records().size() > refinements)
           console.refined(model->sheet().triangulation().n_active_cells(),
                           adaptation->records().back().iterations);
-        table_sizes = state::csv_table_sizes(parameters.output.output_directory);
+        table_sizes
+          = state::csv_table_sizes(parameters.output.output_directory);
         if (parameters.checkpoint.interval > 0
             && committed.increment_number % parameters.checkpoint.interval == 0)
           save_checkpoint();
@@ -234,10 +236,10 @@ namespace deepdraw
       reason = solver::describe(outcome);
       if (outcome != IncrementOutcome::converged || !contact.active())
         return outcome;
-      reason
-        = contact.check_tool_sides(model->sheet().triangulation().get_vertices(),
-                                   newton_unknowns,
-                                   parameters.geometry.thickness);
+      reason = contact.check_tool_sides(
+        model->sheet().triangulation().get_vertices(),
+        newton_unknowns,
+        parameters.geometry.thickness);
       if (reason.empty())
         reason = contact.check_tool_motion(old_load, new_load, newton_unknowns);
       return reason.empty() ? outcome : IncrementOutcome::diverged;

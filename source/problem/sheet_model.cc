@@ -112,7 +112,7 @@ namespace deepdraw
       committed.vertices = discretisation.triangulation().get_vertices();
       committed.enhanced_parameters.assign(
         fe::n_enhanced_parameters(parameters.element.technology) > 0 ? n_cells
-                                                                    : 0,
+                                                                     : 0,
         fe::EnhancedParameters());
       committed.next_increment
         = std::min(stage().load_stepping.initial_increment,
@@ -136,8 +136,9 @@ namespace deepdraw
       // (D101).
       contact::ContactCoupling::Snapshot snapshot;
       if (contact_coupling.active())
-        snapshot = contact_coupling.snapshot(
-          committed.converged_solution, committed.previous_converged_solution);
+        snapshot
+          = contact_coupling.snapshot(committed.converged_solution,
+                                      committed.previous_converged_solution);
       std::vector<bool> new_tools(contact_coupling.tools().size());
       for (unsigned int k = 0; k < new_tools.size(); ++k)
         new_tools[k] = !contact_coupling.takes_part(k);
@@ -185,7 +186,7 @@ namespace deepdraw
       const std::vector<fe::VertexParents>     &parents,
       const std::vector<double>                &old_area)
     {
-      const types::global_dof_index   n_u = discretisation.n_displacement_dofs();
+      const types::global_dof_index n_u = discretisation.n_displacement_dofs();
       std::array<Vector<double> *, 2> solutions
         = {{&committed.converged_solution,
             &committed.previous_converged_solution}};
@@ -198,15 +199,15 @@ namespace deepdraw
       }
       if (contact_coupling.active())
       {
-        contact_coupling.transfer(
-          old,
-          parents,
-          old_area,
-          parents.empty()
-            ? std::vector<double>()
-            : blank::nodal_surface_area(discretisation.triangulation()),
-          extended[0],
-          extended[1]);
+        contact_coupling.transfer(old,
+                                  parents,
+                                  old_area,
+                                  parents.empty()
+                                    ? std::vector<double>()
+                                    : blank::nodal_surface_area(
+                                      discretisation.triangulation()),
+                                  extended[0],
+                                  extended[1]);
         committed.contact = contact_coupling.committed_history();
       }
       committed.converged_solution          = std::move(extended[0]);
@@ -287,8 +288,9 @@ namespace deepdraw
       std::vector<double>                old_area;
       if (contact_coupling.active())
       {
-        snapshot = contact_coupling.snapshot(
-          committed.converged_solution, committed.previous_converged_solution);
+        snapshot
+          = contact_coupling.snapshot(committed.converged_solution,
+                                      committed.previous_converged_solution);
         old_area = blank::nodal_surface_area(discretisation.triangulation());
       }
       const std::vector<fe::VertexParents> parents
@@ -339,7 +341,8 @@ namespace deepdraw
                  saved.converged_solution.size(),
                  n_unknowns());
       // Against the mesh (the refinements replayed), not the initial state.
-      const std::size_t n_cells = discretisation.triangulation().n_active_cells();
+      const std::size_t n_cells
+        = discretisation.triangulation().n_active_cells();
       check_size("quadrature points",
                  saved.history.size(),
                  n_cells * fe::n_weighted_points);

@@ -72,14 +72,14 @@ namespace deepdraw
       // Contact forces and their constraints, after the elements so that
       // the element time excludes the contact search.
       if (contact_coupling.active())
-        result.contact_changes
-          = contact_coupling.assemble(discretisation.triangulation().get_vertices(),
-                                      du,
-                                      constraints_used,
-                                      matrix,
-                                      system->rhs(),
-                                      load,
-                                      predictor);
+        result.contact_changes = contact_coupling.assemble(
+          discretisation.triangulation().get_vertices(),
+          du,
+          constraints_used,
+          matrix,
+          system->rhs(),
+          load,
+          predictor);
       return result;
     }
   } // namespace problem

@@ -10,7 +10,8 @@ namespace deepdraw
         : model(model)
         , run(run)
         , postprocessors(postprocessors)
-    {}
+    {
+    }
 
 
     const blank::BlankGeometry &

@@ -310,8 +310,7 @@ namespace deepdraw
       const unsigned int stage = checkpoint.state.stage;
       if (stage >= n_stages)
         throw InputError("--resume: " + filename + " was written in stage "
-                         + std::to_string(stage + 1)
-                         + ", but the process has "
+                         + std::to_string(stage + 1) + ", but the process has "
                          + std::to_string(n_stages) + " stage(s)");
       const std::vector<std::string> changes
         = changed_model_parameters(checkpoint.parameters,

@@ -45,10 +45,6 @@ namespace deepdraw
     read_run_results(const std::string              &directory,
                      const std::vector<double>      &travels,
                      const std::vector<std::string> &draw_in_names);
-
-    // The travel as it appears in the thickness file names ("15", "7.5").
-    std::string
-    travel_label(double travel);
   } // namespace app
 } // namespace deepdraw
 

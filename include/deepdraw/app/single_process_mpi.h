@@ -1,0 +1,37 @@
+// deepdraw is one process: MPI serves MUMPS and Trilinos on one rank only.
+// Started without a launcher (mpirun sets OMPI_COMM_WORLD_SIZE), Open MPI
+// probes the network transports (UCX, OFI) for 0.2 s of every run; the
+// in-process ones chosen here start at once (D98). Nor does it need the
+// runtime daemon (0.1 s more): the daemon-less singleton runs with a session
+// directory under a base of this process's own, since concurrent singletons
+// under one base share a directory and fail (D98, D99). A setting the user
+// made wins; a study's parent deepdraw passes its base on in the
+// environment, which a child replaces by its own.
+#ifndef deepdraw_app_single_process_mpi_h
+#define deepdraw_app_single_process_mpi_h
+
+#include <string>
+
+namespace deepdraw
+{
+  namespace app
+  {
+    // Construct before MPI_Init (it sets Open MPI's environment), destroy
+    // after MPI_Finalize (it removes the session base).
+    class SingleProcessMpi
+    {
+    public:
+      SingleProcessMpi();
+      ~SingleProcessMpi();
+      SingleProcessMpi(const SingleProcessMpi &) = delete;
+      SingleProcessMpi &
+      operator=(const SingleProcessMpi &)
+        = delete;
+
+    private:
+      std::string session_base;
+    };
+  } // namespace app
+} // namespace deepdraw
+
+#endif
