@@ -27,14 +27,14 @@ def main():
     args, source, work = script_test.start(__doc__)
     short = source / "tests" / "regression" / "square_cup_short.prm"
 
-    # The tools where prm/square_cup_step.prm expects them: ../square-cup-
-    # tools from the prm's directory (here work/run).
-    run([args.deepdraw, "--write-square-cup-tools", "square-cup-tools",
+    # The tools of the short cup where prm/square_cup_step.prm expects them:
+    # tools/square_cup in the prm's directory (here work/run).
+    run([args.deepdraw, "--write-square-cup-tools", "run/tools/square_cup",
          str(short)], work)
     shipped = (source / "prm" / "square_cup_step.prm").read_text()
     start = shipped.index("subsection Contact")
     end = shipped.index("\nend\n", start) + len("\nend\n")
-    (work / "run").mkdir()
+    (work / "run").mkdir(exist_ok=True)
     (work / "run" / "built_in.prm").write_text("include %s\n" % short)
     (work / "run" / "step.prm").write_text(
         "include %s\n%s" % (short, shipped[start:end]))
@@ -46,7 +46,7 @@ def main():
 
     failures = []
     for name in ("punch", "die", "blank holder"):
-        if "tool '%s' from run/../square-cup-tools/" % name not in log:
+        if "tool '%s' from run/tools/square_cup/" % name not in log:
             failures.append("no report of the STEP tool '%s'" % name)
     failures += script_test.compare_tables(work / "built_in", work / "step",
                                            TABLES, TOLERANCE)[0]
