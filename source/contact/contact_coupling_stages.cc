@@ -51,7 +51,7 @@ namespace deepdraw
           const process::ToolStageSettings &settings = stage.tool_settings[k];
           ToolMotion                        motion;
           motion.takes_part
-            = stage.tools.empty()
+            = stage.all_tools
               || std::count(stage.tools.begin(), stage.tools.end(), tool.name);
           motion.force_controlled = settings.control.empty()
                                       ? tool.force_controlled

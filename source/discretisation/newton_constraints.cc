@@ -94,6 +94,15 @@ namespace deepdraw
     }
 
 
+    void
+    NewtonConstraints::clear_constrained_multipliers(
+      Vector<double> &unknowns) const
+    {
+      for (const auto dof : constrained_multipliers)
+        unknowns[dof] = 0.;
+    }
+
+
     std::vector<types::global_dof_index>
     NewtonConstraints::decoupled_unknowns(
       const SheetDiscretisation &sheet) const

@@ -184,9 +184,7 @@ namespace deepdraw
       model->constraints().homogeneous().set_zero(free_residual);
       // Forces are measured against the internal forces (reactions
       // included) or the largest tool force (doc/theory.md §5.2).
-      double reference = block_norm(model->internal_force(), n_u);
-      for (const Tensor<1, 3> &force : model->contact().tool_forces())
-        reference = std::max(reference, force.norm());
+      double reference = model->force_scale();
       if (!(reference > 0.))
         reference = 1.;
       solver::ResidualMeasures measures;

@@ -1,6 +1,7 @@
 // SheetModel: the set-up of the first stage, the transitions between stages,
 // the commit of converged increments, refinement and restart.
 #include <algorithm>
+#include <cmath>
 #include <deepdraw/blank/nodal_surface_area.h>
 #include <deepdraw/fe/selective_reduced_quadrature.h>
 #include <deepdraw/io/input_error.h>
@@ -142,11 +143,21 @@ namespace deepdraw
       std::vector<bool> new_tools(contact_coupling.tools().size());
       for (unsigned int k = 0; k < new_tools.size(); ++k)
         new_tools[k] = !contact_coupling.takes_part(k);
-      committed.stage           = index;
-      committed.stage_completed = false;
+      // A stage that releases what the last one carried converges against
+      // the forces it releases, not against the forces that are left
+      // (D102).
+      committed.stage_force_scale = force_scale();
+      committed.stage             = index;
+      committed.stage_completed   = false;
       contact_coupling.begin_stage(index);
       set_up_system();
       carry_contact_state(snapshot, {}, {});
+      // A force along a component the stage prescribes is the constraint's
+      // now.
+      newton_constraints.clear_constrained_multipliers(
+        committed.converged_solution);
+      newton_constraints.clear_constrained_multipliers(
+        committed.previous_converged_solution);
       // A new stage starts from the tangent predictor: the last increment
       // of another stage says nothing about the first of this one.
       committed.last_load_increment = 0.;
@@ -455,6 +466,21 @@ namespace deepdraw
     SheetModel::reaction_faces() const
     {
       return faces_with_reactions;
+    }
+
+
+    double
+    SheetModel::force_scale() const
+    {
+      double sum = 0.;
+      for (types::global_dof_index i = 0;
+           i < discretisation.n_displacement_dofs();
+           ++i)
+        sum += internal_forces[i] * internal_forces[i];
+      double scale = std::sqrt(sum);
+      for (const Tensor<1, 3> &force : contact_coupling.tool_forces())
+        scale = std::max(scale, force.norm());
+      return std::max(scale, committed.stage_force_scale);
     }
 
 

@@ -45,7 +45,8 @@ namespace deepdraw
         stage.start_load        = start_load;
         stage.end_load          = end_load;
         const std::string tools = Utilities::trim(prm.get("Tools"));
-        if (tools != "all")
+        stage.all_tools         = tools == "all";
+        if (tools != "all" && tools != "none")
           for (const std::string &name : Utilities::split_string_list(tools))
             if (!name.empty())
               stage.tools.push_back(name);
@@ -133,8 +134,8 @@ namespace deepdraw
         prm.declare_entry("Tools",
                           "all",
                           Patterns::Anything(),
-                          "The tools that take part in the stage, 'all' or "
-                          "a comma-separated list of their names "
+                          "The tools that take part in the stage: 'all', "
+                          "'none' or a comma-separated list of their names "
                           "(Contact/Tool N/Name). A tool left out has no "
                           "contact with the sheet in this stage: its "
                           "contact forces are removed at the start of the "
@@ -253,11 +254,14 @@ namespace deepdraw
           }
         }
         if (!(end > start) || !(end <= 1e6))
-          throw InputError((last ? std::string("Process/Final load = ")
-                                 : prefix + "Final load = ")
-                           + number(end) + ": the stage of " + prefix
-                           + " begins at load " + number(start)
-                           + " and must end after it (at most at 1e6)");
+          throw InputError(
+            (last ? std::string("Process/Final load = ")
+                  : prefix + "Final load = ")
+            + number(end) + ": " + prefix.substr(8, prefix.size() - 9)
+            + (start > 0. ? " begins where the stage before "
+                            "it ends, at load "
+                          : " begins at load ")
+            + number(start) + ", and must end after that (at most at 1e6)");
         return end;
       }
     } // namespace

@@ -155,6 +155,7 @@ namespace deepdraw
       }
       put(stream, stage);
       put(stream, static_cast<unsigned char>(stage_completed ? 1 : 0));
+      put(stream, stage_force_scale);
       for (const auto *values :
            {&contact.tool_origin, &contact.tool_translation})
         put_doubles(stream, values->data(), values->size());
@@ -221,8 +222,9 @@ namespace deepdraw
                        cycle.size() * sizeof(cycle[0]),
                        source);
       }
-      stage           = 0;
-      stage_completed = false;
+      stage             = 0;
+      stage_completed   = false;
+      stage_force_scale = 0.;
       contact.tool_origin.assign(3 * contact.tool_position.size(), 0.);
       contact.tool_translation.clear();
       if (!with_stages)
@@ -231,6 +233,7 @@ namespace deepdraw
       unsigned char completed = 0;
       get(stream, completed);
       stage_completed = completed != 0;
+      get(stream, stage_force_scale);
       for (auto *values : {&contact.tool_origin, &contact.tool_translation})
       {
         values->resize(get_count(stream));

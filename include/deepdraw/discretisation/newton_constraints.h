@@ -47,6 +47,11 @@ namespace deepdraw
       const AffineConstraints<double> &
       predictor() const;
 
+      // Sets the contact forces along prescribed components to zero (after a
+      // stage changed the prescribed dofs, its pairs' forces carried over).
+      void
+      clear_constrained_multipliers(Vector<double> &unknowns) const;
+
       // Unknowns whose row and column hold only their diagonal in the
       // Newton matrix: the prescribed dofs, the constrained contact
       // forces and the hanging dofs (D60).

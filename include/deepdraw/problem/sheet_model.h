@@ -138,6 +138,11 @@ namespace deepdraw
       // Internal nodal forces of the last assembly.
       const Vector<double> &
       internal_force() const;
+      // The force scale of the last assembly (doc/theory.md §5.2): the
+      // larger of ||f_int|| over the displacement dofs and the largest tool
+      // force, at least the stage's (D102).
+      double
+      force_scale() const;
       // The faces with a prescribed displacement in some stage.
       const std::vector<unsigned int> &
       reaction_faces() const;

@@ -45,7 +45,8 @@ namespace deepdraw
       Kind        kind       = Kind::forming;
       double      start_load = 0.;
       double      end_load   = 1.;
-      // The names of the tools that take part; empty: all of them.
+      // Every tool takes part, or those named.
+      bool                     all_tools = true;
       std::vector<std::string> tools;
       // Force of the force-controlled tools, an expression of t (N), and
       // the parameter it comes from (for messages).

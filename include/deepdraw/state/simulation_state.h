@@ -53,6 +53,10 @@ namespace deepdraw
       // outputs written, the next stage not yet begun).
       unsigned int stage           = 0;
       bool         stage_completed = false;
+      // The forces the model carried when the stage began (the reference
+      // force F_ref of doc/theory.md §5.2 is at least this, D102; 0 in the
+      // first stage).
+      double stage_force_scale = 0.;
 
       // Binary image of all of the above; read() throws std::runtime_error
       // if the stream is not one (or was cut short).
