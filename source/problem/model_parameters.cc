@@ -64,15 +64,16 @@ namespace deepdraw
       square_cup_tools.parse_parameters(prm);
       checkpoint.parse_parameters(prm);
       adaptivity.parse_parameters(prm);
+      process::StageDefaults stage_defaults;
+      stage_defaults.final_load          = process.final_load;
+      stage_defaults.blank_holder_force  = process.blank_holder_force;
+      stage_defaults.boundary_conditions = boundary_conditions;
+      stage_defaults.load_stepping       = load_stepping;
+      stage_defaults.symmetry_plane_x    = geometry.symmetry_plane_x;
+      stage_defaults.symmetry_plane_y    = geometry.symmetry_plane_y;
+      stage_defaults.n_tool_slots        = contact::n_tool_slots;
       prm.enter_subsection("Process");
-      stages = process::parse_stages(prm,
-                                     process.final_load,
-                                     process.blank_holder_force,
-                                     boundary_conditions,
-                                     load_stepping,
-                                     geometry.symmetry_plane_x,
-                                     geometry.symmetry_plane_y,
-                                     contact::n_tool_slots);
+      stages = process::parse_stages(prm, stage_defaults);
       prm.leave_subsection();
       listing = state::flatten_parameters(prm);
       ParameterHandler defaults;

@@ -27,16 +27,11 @@ namespace deepdraw
 
       // The entries of one named stage slot (the current subsection).
       Stage
-      parse_stage(ParameterHandler                         &prm,
-                  const std::string                        &prefix,
-                  const double                              start_load,
-                  const double                              end_load,
-                  const std::string                        &blank_holder_force,
-                  const PrescribedDisplacements            &boundary_conditions,
-                  const solver::IncrementControlParameters &load_stepping,
-                  const bool                                symmetry_plane_x,
-                  const bool                                symmetry_plane_y,
-                  const unsigned int                        n_tool_slots)
+      parse_stage(ParameterHandler    &prm,
+                  const std::string   &prefix,
+                  const double         start_load,
+                  const double         end_load,
+                  const StageDefaults &defaults)
       {
         Stage stage;
         stage.parameter_prefix  = prefix;
@@ -52,23 +47,24 @@ namespace deepdraw
               stage.tools.push_back(name);
         const std::string force
           = Utilities::trim(prm.get("Blank holder force"));
-        stage.blank_holder_force = force.empty() ? blank_holder_force : force;
+        stage.blank_holder_force
+          = force.empty() ? defaults.blank_holder_force : force;
         if (!force.empty())
           stage.blank_holder_force_parameter = prefix + "Blank holder force";
         const std::string conditions
           = Utilities::trim(prm.get("Prescribed displacements"));
         if (conditions.empty())
-          stage.prescribed = boundary_conditions;
+          stage.prescribed = defaults.boundary_conditions;
         else
           stage.prescribed.parse(conditions == "none" ? std::string()
                                                       : conditions,
-                                 symmetry_plane_x,
-                                 symmetry_plane_y,
+                                 defaults.symmetry_plane_x,
+                                 defaults.symmetry_plane_y,
                                  prefix + "Prescribed displacements");
-        stage.load_stepping = load_stepping;
+        stage.load_stepping = defaults.load_stepping;
         stage.load_stepping.parse_overrides(prm, prefix);
         stage.load_stepping.final_load = end_load;
-        for (unsigned int slot = 0; slot < n_tool_slots; ++slot)
+        for (unsigned int slot = 0; slot < defaults.n_tool_slots; ++slot)
         {
           prm.enter_subsection("Tool " + std::to_string(slot + 1));
           stage.tool_settings.push_back(
@@ -268,14 +264,7 @@ namespace deepdraw
 
 
     std::vector<Stage>
-    parse_stages(ParameterHandler                         &prm,
-                 const double                              final_load,
-                 const std::string                        &blank_holder_force,
-                 const PrescribedDisplacements            &boundary_conditions,
-                 const solver::IncrementControlParameters &load_stepping,
-                 const bool                                symmetry_plane_x,
-                 const bool                                symmetry_plane_y,
-                 const unsigned int                        n_tool_slots)
+    parse_stages(ParameterHandler &prm, const StageDefaults &defaults)
     {
       std::vector<unsigned int> named;
       for (unsigned int slot = 0; slot < n_stage_slots; ++slot)
@@ -285,7 +274,7 @@ namespace deepdraw
         if (!Utilities::trim(prm.get("Name")).empty())
           named.push_back(slot);
         else
-          check_unused_slot(prm, prefix, n_tool_slots);
+          check_unused_slot(prm, prefix, defaults.n_tool_slots);
         prm.leave_subsection();
         if (!named.empty() && named.back() != named.size() - 1)
           throw InputError(prefix
@@ -300,12 +289,12 @@ namespace deepdraw
         // The process of a prm without stages: the top-level parameters.
         Stage stage;
         stage.name                     = "forming";
-        stage.end_load                 = final_load;
-        stage.blank_holder_force       = blank_holder_force;
-        stage.prescribed               = boundary_conditions;
-        stage.load_stepping            = load_stepping;
-        stage.load_stepping.final_load = final_load;
-        stage.tool_settings.resize(n_tool_slots);
+        stage.end_load                 = defaults.final_load;
+        stage.blank_holder_force       = defaults.blank_holder_force;
+        stage.prescribed               = defaults.boundary_conditions;
+        stage.load_stepping            = defaults.load_stepping;
+        stage.load_stepping.final_load = defaults.final_load;
+        stage.tool_settings.resize(defaults.n_tool_slots);
         stages.push_back(std::move(stage));
         return stages;
       }
@@ -315,18 +304,12 @@ namespace deepdraw
       {
         const std::string prefix = "Process/" + slot_name(slot) + "/";
         prm.enter_subsection(slot_name(slot));
-        const double end
-          = stage_end(prm, prefix, slot == named.back(), final_load, start);
-        Stage stage = parse_stage(prm,
-                                  prefix,
-                                  start,
-                                  end,
-                                  blank_holder_force,
-                                  boundary_conditions,
-                                  load_stepping,
-                                  symmetry_plane_x,
-                                  symmetry_plane_y,
-                                  n_tool_slots);
+        const double end   = stage_end(prm,
+                                     prefix,
+                                     slot == named.back(),
+                                     defaults.final_load,
+                                     start);
+        Stage        stage = parse_stage(prm, prefix, start, end, defaults);
         prm.leave_subsection();
         for (const Stage &other : stages)
           if (other.name == stage.name)

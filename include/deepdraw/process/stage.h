@@ -75,20 +75,26 @@ namespace deepdraw
     void
     declare_stage_parameters(ParameterHandler &prm, unsigned int n_tool_slots);
 
+    // What a stage takes from the rest of the prm where it sets nothing.
+    struct StageDefaults
+    {
+      // Process/Final load: where the last stage ends.
+      double                             final_load = 1.;
+      std::string                        blank_holder_force;
+      PrescribedDisplacements            boundary_conditions;
+      solver::IncrementControlParameters load_stepping;
+      // Of subsection Geometry (the symmetry planes add prescribed
+      // displacements).
+      bool         symmetry_plane_x = true;
+      bool         symmetry_plane_y = true;
+      unsigned int n_tool_slots     = 0;
+    };
+
     // Reads the stages from the current subsection (Process). Without a
-    // named stage: one forming stage from 0 to final_load with
-    // blank_holder_force, the top-level boundary conditions and load
-    // stepping. The top-level values are the defaults of every stage.
-    // Throws InputError naming the parameter.
+    // named stage: one forming stage from 0 to the final load of the
+    // defaults. Throws InputError naming the parameter.
     std::vector<Stage>
-    parse_stages(ParameterHandler                         &prm,
-                 double                                    final_load,
-                 const std::string                        &blank_holder_force,
-                 const PrescribedDisplacements            &boundary_conditions,
-                 const solver::IncrementControlParameters &load_stepping,
-                 bool                                      symmetry_plane_x,
-                 bool                                      symmetry_plane_y,
-                 unsigned int                              n_tool_slots);
+    parse_stages(ParameterHandler &prm, const StageDefaults &defaults);
   } // namespace process
 } // namespace deepdraw
 
