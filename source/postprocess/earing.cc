@@ -20,11 +20,6 @@ namespace deepdraw
       public:
         // Output/Thickness profile travels is declared by "thickness
         // profiles", Process tables/Punch tool by "punch force".
-        static void
-        declare_parameters(ParameterHandler &)
-        {
-        }
-
         void
         parse_parameters(ParameterHandler &prm) override
         {

@@ -15,11 +15,6 @@ namespace deepdraw
       class Reactions : public Interface
       {
       public:
-        static void
-        declare_parameters(ParameterHandler &)
-        {
-        }
-
         void
         start(const SimulationAccess &simulation, const bool resume) override
         {

@@ -14,11 +14,6 @@ namespace deepdraw
       class ToolForces : public Interface
       {
       public:
-        static void
-        declare_parameters(ParameterHandler &)
-        {
-        }
-
         void
         start(const SimulationAccess &simulation, const bool resume) override
         {

@@ -14,11 +14,6 @@ namespace deepdraw
       class ContactFields : public VtuField
       {
       public:
-        static void
-        declare_parameters(ParameterHandler &)
-        {
-        }
-
         void
         add(const SimulationAccess &simulation, VtuData &data) const override
         {

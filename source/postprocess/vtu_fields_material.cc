@@ -55,11 +55,6 @@ namespace deepdraw
       class Stress : public VtuField
       {
       public:
-        static void
-        declare_parameters(ParameterHandler &)
-        {
-        }
-
         void
         add(const SimulationAccess &simulation, VtuData &data) const override
         {
@@ -75,11 +70,6 @@ namespace deepdraw
       class BackStress : public VtuField
       {
       public:
-        static void
-        declare_parameters(ParameterHandler &)
-        {
-        }
-
         void
         add(const SimulationAccess &simulation, VtuData &data) const override
         {
@@ -101,11 +91,6 @@ namespace deepdraw
       class RollingDirection : public VtuField
       {
       public:
-        static void
-        declare_parameters(ParameterHandler &)
-        {
-        }
-
         void
         add(const SimulationAccess &simulation, VtuData &data) const override
         {
@@ -122,11 +107,6 @@ namespace deepdraw
       class EquivalentStress : public VtuField
       {
       public:
-        static void
-        declare_parameters(ParameterHandler &)
-        {
-        }
-
         void
         add(const SimulationAccess &simulation, VtuData &data) const override
         {
@@ -146,11 +126,6 @@ namespace deepdraw
       class EquivalentPlasticStrain : public VtuField
       {
       public:
-        static void
-        declare_parameters(ParameterHandler &)
-        {
-        }
-
         void
         add(const SimulationAccess &simulation, VtuData &data) const override
         {

@@ -13,11 +13,6 @@ namespace deepdraw
       class Displacement : public VtuField
       {
       public:
-        static void
-        declare_parameters(ParameterHandler &)
-        {
-        }
-
         void
         add(const SimulationAccess &simulation, VtuData &data) const override
         {
@@ -31,11 +26,6 @@ namespace deepdraw
       class ThicknessStrain : public VtuField
       {
       public:
-        static void
-        declare_parameters(ParameterHandler &)
-        {
-        }
-
         void
         add(const SimulationAccess &simulation, VtuData &data) const override
         {

@@ -51,11 +51,7 @@ def main():
         result = run([args.deepdraw, "--check", "prm/" + prm.name], source)
         if "the input is valid" not in result:
             failures.append("deepdraw --check prm/%s fails" % prm.name)
-    for failure in failures:
-        print("FAILED:", failure)
-    if failures:
-        sys.exit(1)
-    print("PASSED")
+    script_test.finish(failures)
 
 
 if __name__ == "__main__":

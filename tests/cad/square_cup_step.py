@@ -50,11 +50,7 @@ def main():
             failures.append("no report of the STEP tool '%s'" % name)
     failures += script_test.compare_tables(work / "built_in", work / "step",
                                            TABLES, TOLERANCE)[0]
-    for failure in failures:
-        print("FAILED:", failure)
-    if failures:
-        sys.exit(1)
-    print("PASSED")
+    script_test.finish(failures)
 
 
 if __name__ == "__main__":

@@ -14,7 +14,6 @@ the parameter, and the output directory is left byte for byte as it was.
     stage_resume_test.py --deepdraw EXE --source-dir REPO --work-dir DIR
 """
 import csv
-import filecmp
 import pathlib
 import shutil
 import subprocess
@@ -22,22 +21,7 @@ import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
 import script_test  # noqa: E402
-from script_test import run  # noqa: E402
-
-SKIPPED = ("symbolic_analyses",)
-
-
-def comparable(path):
-    with open(path) as f:
-        rows = list(csv.reader(f))
-    keep = [j for j, name in enumerate(rows[0])
-            if not name.endswith("_s") and name not in SKIPPED]
-    return [[row[j] for j in keep] for row in rows]
-
-
-def snapshot(directory):
-    return {p.name: p.read_bytes() for p in sorted(directory.iterdir())}
-
+from script_test import comparable_table, run, snapshot  # noqa: E402
 
 def main():
     args, source, work = script_test.start(__doc__)
@@ -55,8 +39,8 @@ def main():
     if "resumed at load 2" not in log:
         failures.append("the resumed run did not start at the end of stage 2")
     for table in sorted(p.name for p in (work / "full").glob("*.csv")):
-        same = comparable(work / "full" / table) == \
-            comparable(work / "resumed" / table)
+        same = comparable_table(work / "full" / table) == \
+            comparable_table(work / "resumed" / table)
         print("%s %s" % ("same" if same else "DIFFERENT", table))
         if not same:
             failures.append(table + " differs from the uninterrupted run")
@@ -98,11 +82,7 @@ def main():
     if snapshot(work / "refused") != before:
         failures.append("the refused resume changed the output directory")
 
-    for failure in failures:
-        print("FAILED:", failure)
-    if failures:
-        sys.exit(1)
-    print("PASSED")
+    script_test.finish(failures)
 
 
 if __name__ == "__main__":

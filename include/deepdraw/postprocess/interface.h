@@ -24,9 +24,14 @@ namespace deepdraw
     public:
       virtual ~Interface() = default;
 
-      // Its parameters (declared by the class's static
-      // declare_parameters(ParameterHandler &), which the registration
-      // names). Throws InputError naming the parameter.
+      // Declares its parameters; the registration calls the derived
+      // class's, and this one (none) where it has none.
+      static void
+      declare_parameters(ParameterHandler &)
+      {
+      }
+
+      // Its parameters. Throws InputError naming the parameter.
       virtual void
       parse_parameters(ParameterHandler &prm);
 

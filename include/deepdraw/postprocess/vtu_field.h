@@ -54,6 +54,13 @@ namespace deepdraw
     {
     public:
       virtual ~VtuField() = default;
+
+      // Its parameters, if any (the derived class hides this one).
+      static void
+      declare_parameters(ParameterHandler &)
+      {
+      }
+
       // Adds its field(s), computed on the state of the last converged
       // increment.
       virtual void
@@ -64,8 +71,7 @@ namespace deepdraw
   } // namespace postprocess
 } // namespace deepdraw
 
-// In the field's .cc file, after the class (which has a static
-// declare_parameters(ParameterHandler &)): registers it under `name`, the
+// In the field's .cc file, after the class: registers it under `name`, the
 // name in Output/VTU fields.
 #define DEEPDRAW_REGISTER_VTU_FIELD(classname, name, description) \
   DEEPDRAW_REGISTER_PLUGIN(::deepdraw::postprocess::VtuField,     \
