@@ -1,6 +1,6 @@
 // Assembly cost of the reference blank (doc/results.md: 25 x 25 x 2 hexahedra,
 // 75 x 75 x 0.81 mm, NUMISHEET'93 aluminium) in a plastic state: residual
-// and tangent of FormingProblem::assemble_system for a displacement
+// and tangent of IncrementSolver::assemble_system for a displacement
 // increment of ~1 % strain (biaxial stretching, thinning, shear, a rotation
 // and a non-affine bending part), in microseconds per cell, with one thread
 // and with all threads. Target (issue): <= 25 us per cell on 2 cores.
@@ -25,10 +25,11 @@ namespace
                        const Vector<double>    &du,
                        const unsigned int       repetitions)
   {
-    forming_problem.assemble_system(du); // warm-up (caches, thread pool)
+    forming_problem.increment_solver().assemble_system(
+      du); // warm-up (caches, thread pool)
     const auto start = std::chrono::steady_clock::now();
     for (unsigned int r = 0; r < repetitions; ++r)
-      if (!forming_problem.assemble_system(du))
+      if (!forming_problem.increment_solver().assemble_system(du))
       {
         std::printf("assembly failed\n");
         std::exit(1);
@@ -90,9 +91,10 @@ main(int argc, char *argv[])
   const double t_one = seconds_per_assembly(forming_problem, du, repetitions);
 
   const double plastic_fraction
-    = double(forming_problem.last_plastic_points()) / (8. * n_cells);
+    = double(forming_problem.increment_solver().progress().plastic_points)
+      / (8. * n_cells);
   Vector<double> residual;
-  forming_problem.evaluate_residual(du, residual, nullptr);
+  forming_problem.increment_solver().evaluate_residual(du, residual, nullptr);
 
   std::printf("problem assembly: %u cells, %u dofs, %u repetitions, "
               "plastic points %.1f %%\n",

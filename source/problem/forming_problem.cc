@@ -1,6 +1,6 @@
-// FormingProblem: its construction and what tests and benchmarks call
-// directly. The run is in forming_problem_run.cc, one increment in
-// forming_problem_newton.cc.
+// FormingProblem: its construction, what tests and benchmarks call
+// directly, and its checkpoints. The run is in forming_problem_run.cc, one
+// increment in increment_solver.cc.
 #include <deepdraw/problem/forming_problem.h>
 
 namespace deepdraw
@@ -24,7 +24,7 @@ namespace deepdraw
         = std::make_unique<adaptivity::MeshAdaptation>(parameters.adaptivity);
       view
         = std::make_unique<SimulationView>(*model, run_record, postprocessors);
-      newton_unknowns.reinit(model->n_unknowns());
+      increments = std::make_unique<IncrementSolver>(*model, parameters.newton);
       postprocessors.initialize(*view);
     }
 
@@ -36,54 +36,10 @@ namespace deepdraw
     }
 
 
-    void
-    FormingProblem::prepare_increment(const double old_load,
-                                      const double new_load)
+    IncrementSolver &
+    FormingProblem::increment_solver()
     {
-      model->prepare_increment(old_load, new_load);
-      start_load  = old_load;
-      target_load = new_load;
-    }
-
-
-    bool
-    FormingProblem::assemble_system(const Vector<double> &unknowns)
-    {
-      AffineConstraints<double> none;
-      none.close();
-      return assemble(unknowns, none, true) == IncrementOutcome::converged;
-    }
-
-
-    bool
-    FormingProblem::evaluate_residual(const Vector<double> &unknowns,
-                                      Vector<double>       &residual,
-                                      FullMatrix<double>   *tangent)
-    {
-      AffineConstraints<double> none;
-      none.close();
-      const IncrementOutcome status
-        = assemble(unknowns, none, tangent != nullptr);
-      // Without constraints rhs = -r for all equations, contact included.
-      residual = model->linear_system().rhs();
-      residual *= -1.;
-      if (tangent != nullptr)
-        model->linear_system().copy_to(*tangent);
-      return status == IncrementOutcome::converged;
-    }
-
-
-    unsigned int
-    FormingProblem::last_plastic_points() const
-    {
-      return progress.plastic_points;
-    }
-
-
-    const std::vector<double> &
-    FormingProblem::last_residuals() const
-    {
-      return progress.force_residuals;
+      return *increments;
     }
 
 
@@ -91,6 +47,42 @@ namespace deepdraw
     FormingProblem::refinement_records() const
     {
       return adaptation->records();
+    }
+
+
+    // Checkpoint and restart (doc/user_guide.md §6, D55, D101): the
+    // committed state with its stage, the parameters, the output tables'
+    // sizes and the post-processors' data.
+    void
+    FormingProblem::save_checkpoint() const
+    {
+      state::Checkpoint checkpoint;
+      checkpoint.parameters     = parameters.listing;
+      checkpoint.state          = model->state();
+      checkpoint.table_sizes    = table_sizes;
+      checkpoint.postprocessors = postprocessors.save();
+      state::write_checkpoint(state::checkpoint_file(
+                                parameters.output.output_directory),
+                              checkpoint);
+    }
+
+
+    void
+    FormingProblem::restore_checkpoint()
+    {
+      const std::string &directory  = parameters.output.output_directory;
+      const std::string  filename   = state::checkpoint_file(directory);
+      state::Checkpoint  checkpoint = state::read_checkpoint(filename);
+      state::check_resumable(checkpoint,
+                             filename,
+                             parameters.listing,
+                             parameters.default_listing,
+                             parameters.stages.size());
+      model->restore(std::move(checkpoint.state));
+      increments->reset_unknowns();
+      postprocessors.initialize(*view);
+      state::truncate_tables(directory, checkpoint.table_sizes);
+      postprocessors.load(checkpoint.postprocessors);
     }
   } // namespace problem
 } // namespace deepdraw

@@ -6,11 +6,11 @@
 #include <algorithm>
 #include <cmath>
 #include <deepdraw/io/input_error.h>
+#include <deepdraw/io/output_directory.h>
 #include <deepdraw/problem/console_report.h>
 #include <deepdraw/problem/forming_problem.h>
 #include <deepdraw/state/checkpoint.h>
 #include <deepdraw/state/stop_request.h>
-#include <filesystem>
 #include <iostream>
 
 namespace deepdraw
@@ -53,29 +53,15 @@ namespace deepdraw
     void
     FormingProblem::open_outputs(const bool resume)
     {
-      // A failure here is an input error (exit code 2, D11), after which
-      // nothing may be left behind: a directory made here is removed again.
-      const std::string &directory = parameters.output.output_directory;
-      const bool         existed   = std::filesystem::exists(directory);
-      try
-      {
-        std::filesystem::create_directories(directory);
-        postprocessors.start(*view, resume);
-        newton_log.open(directory, resume);
-        adaptation->open(directory, resume);
-      }
-      catch (const std::exception &error)
-      {
-        if (!existed)
+      io::open_output_directory(
+        parameters.output.output_directory,
+        "Output/Output directory",
+        [&]()
         {
-          std::error_code ignored;
-          std::filesystem::remove_all(directory, ignored);
-        }
-        if (dynamic_cast<const InputError *>(&error) != nullptr)
-          throw;
-        throw InputError("Output/Output directory: cannot write results to '"
-                         + directory + "': " + error.what());
-      }
+          postprocessors.start(*view, resume);
+          increments->open_log(parameters.output.output_directory, resume);
+          adaptation->open(parameters.output.output_directory, resume);
+        });
     }
 
 
@@ -108,19 +94,15 @@ namespace deepdraw
     void
     FormingProblem::run_stage(const ConsoleReport &console)
     {
-      state::SimulationState &committed = model->state();
-      const process::Stage   &stage     = model->stage();
-      std::vector<double>     landings;
+      const state::SimulationState &committed = model->state();
+      const process::Stage         &stage     = model->stage();
+      std::vector<double>           landings;
       for (const double load : postprocessors.requested_loads(*view))
         if (load > stage.start_load && load < stage.end_load)
           landings.push_back(load);
       solver::IncrementControl control(stage.load_stepping, landings);
       control.restore({committed.load, committed.next_increment});
-      // The times of an increment include its failed attempts (cut-backs):
-      // they are reset only once it has converged.
-      progress.assembly_time = progress.solve_time = 0.;
-      double search_time_before = model->contact().search_time();
-      run_record.increment_timer.restart();
+      start_next_increment();
       while (!control.finished())
       {
         if (const int signal_number = state::requested_stop_signal())
@@ -131,60 +113,88 @@ namespace deepdraw
         unsigned int iterations = 0;
         std::string  reason;
         if (solve_checked_increment(old_load, new_load, iterations, reason)
-            != IncrementOutcome::converged)
+            == IncrementOutcome::converged)
         {
-          console.cut_back(new_load, reason);
-          model->restore_trial_state();
-          if (!control.cut_back())
-          {
-            const bool too_small = control.next_increment()
-                                   < stage.load_stepping.minimum_increment;
-            stop_cleanly(
-              "the increment from load " + format_load(old_load) + " to "
-              + format_load(new_load) + " failed (" + reason + ") after "
-              + std::to_string(control.cut_backs_of_current_increment())
-              + " attempt(s), and "
-              + (too_small ? "a further cut-back would go below Load "
-                             "stepping/Minimum increment"
-                           : "Load stepping/Maximum cut-backs is reached"));
-          }
+          const unsigned int cut_backs
+            = control.cut_backs_of_current_increment();
+          control.accept(iterations);
+          run_record.at_stage_end = control.finished();
+          run_record.at_landing
+            = control.finished() || is_landing(landings, new_load);
+          complete_increment(new_load - old_load,
+                             control.state().increment,
+                             iterations,
+                             cut_backs,
+                             console);
+          start_next_increment();
           continue;
         }
-
-        const unsigned int cut_backs = control.cut_backs_of_current_increment();
-        control.accept(iterations);
-        model->commit(newton_unknowns, start_load, target_load);
-        ++committed.increment_number;
-        committed.next_increment = control.state().increment;
-        run_record.report.search_time
-          = model->contact().search_time() - search_time_before;
-        run_record.at_stage_end = control.finished();
-        run_record.at_landing
-          = control.finished() || is_landing(landings, new_load);
-        report_increment(new_load - old_load, iterations, cut_backs);
-        console.increment(*view, iterations, cut_backs);
-
-        // Adaptive refinement and re-equilibration at this load (D80), not
-        // after the last increment of the run.
-        const bool last = control.finished()
-                          && committed.stage + 1 == parameters.stages.size();
-        const std::size_t refinements = adaptation->records().size();
-        if (!adapt_mesh(last, reason))
-          stop_cleanly("the re-equilibration after refining the mesh at load "
-                       + format_load(committed.load) + " failed (" + reason
-                       + ")");
-        if (adaptation->records().size() > refinements)
-          console.refined(model->sheet().triangulation().n_active_cells(),
-                          adaptation->records().back().iterations);
-        table_sizes
-          = state::csv_table_sizes(parameters.output.output_directory);
-        if (parameters.checkpoint.interval > 0
-            && committed.increment_number % parameters.checkpoint.interval == 0)
-          save_checkpoint();
-        progress.assembly_time = progress.solve_time = 0.;
-        search_time_before = model->contact().search_time();
-        run_record.increment_timer.restart();
+        console.cut_back(new_load, reason);
+        model->restore_trial_state();
+        if (!control.cut_back())
+        {
+          const bool too_small
+            = control.next_increment() < stage.load_stepping.minimum_increment;
+          stop_cleanly(
+            "the increment from load " + format_load(old_load) + " to "
+            + format_load(new_load) + " failed (" + reason + ") after "
+            + std::to_string(control.cut_backs_of_current_increment())
+            + " attempt(s), and "
+            + (too_small ? "a further cut-back would go below Load "
+                           "stepping/Minimum increment"
+                         : "Load stepping/Maximum cut-backs is reached"));
+        }
       }
+    }
+
+
+    void
+    FormingProblem::start_next_increment()
+    {
+      // The times of an increment include its failed attempts (cut-backs):
+      // they are reset only once it has converged.
+      increments->start_timing();
+      run_record.start_increment(model->contact().search_time());
+    }
+
+
+    void
+    FormingProblem::complete_increment(const double         load_increment,
+                                       const double         next_increment,
+                                       const unsigned int   iterations,
+                                       const unsigned int   cut_backs,
+                                       const ConsoleReport &console)
+    {
+      state::SimulationState &committed = model->state();
+      increments->commit();
+      ++committed.increment_number;
+      committed.next_increment = next_increment;
+      run_record.record_increment(load_increment,
+                                  iterations,
+                                  cut_backs,
+                                  increments->progress(),
+                                  model->linear_system().statistics(),
+                                  model->contact().search_time());
+      postprocessors.execute(*view);
+      console.increment(*view, iterations, cut_backs);
+
+      // Adaptive refinement and re-equilibration at this load (D80), not
+      // after the last increment of the run.
+      const bool last = run_record.at_stage_end
+                        && committed.stage + 1 == parameters.stages.size();
+      const std::size_t refinements = adaptation->records().size();
+      std::string       reason;
+      if (!adapt_mesh(last, reason))
+        stop_cleanly("the re-equilibration after refining the mesh at load "
+                     + format_load(committed.load) + " failed (" + reason
+                     + ")");
+      if (adaptation->records().size() > refinements)
+        console.refined(model->sheet().triangulation().n_active_cells(),
+                        adaptation->records().back().iterations);
+      table_sizes = state::csv_table_sizes(parameters.output.output_directory);
+      if (parameters.checkpoint.interval > 0
+          && committed.increment_number % parameters.checkpoint.interval == 0)
+        save_checkpoint();
     }
 
 
@@ -201,7 +211,7 @@ namespace deepdraw
                      + parameters.stages[index].name
                      + "' cannot begin: " + error.what());
       }
-      newton_unknowns = model->state().converged_solution;
+      increments->reset_unknowns();
       postprocessors.initialize(*view);
     }
 
@@ -232,42 +242,19 @@ namespace deepdraw
       if (!reason.empty())
         return IncrementOutcome::diverged;
       const IncrementOutcome outcome
-        = solve_increment(old_load, new_load, iterations);
+        = increments->solve(old_load, new_load, iterations);
       reason = solver::describe(outcome);
       if (outcome != IncrementOutcome::converged || !contact.active())
         return outcome;
       reason = contact.check_tool_sides(
         model->sheet().triangulation().get_vertices(),
-        newton_unknowns,
+        increments->unknowns(),
         parameters.geometry.thickness);
       if (reason.empty())
-        reason = contact.check_tool_motion(old_load, new_load, newton_unknowns);
+        reason = contact.check_tool_motion(old_load,
+                                           new_load,
+                                           increments->unknowns());
       return reason.empty() ? outcome : IncrementOutcome::diverged;
-    }
-
-
-    void
-    FormingProblem::report_increment(const double       load_increment,
-                                     const unsigned int iterations,
-                                     const unsigned int cut_backs)
-    {
-      const solver::LinearSolver::Statistics solver_statistics
-        = model->linear_system().statistics();
-      postprocess::IncrementReport &report = run_record.report;
-      report.load_increment                = load_increment;
-      report.iterations                    = iterations;
-      report.cut_backs                     = cut_backs;
-      report.force_residual                = progress.last_force_residual();
-      report.contact_residual              = progress.last_contact_residual();
-      report.plastic_points                = progress.plastic_points;
-      report.contact_changes               = progress.contact_changes;
-      report.assembly_time                 = progress.assembly_time;
-      report.solve_time                    = progress.solve_time;
-      report.factorized_unknowns = solver_statistics.factorized_unknowns;
-      report.symbolic_analyses   = solver_statistics.symbolic_analyses
-                                 - reported_solver_statistics.symbolic_analyses;
-      reported_solver_statistics = solver_statistics;
-      postprocessors.execute(*view);
     }
 
 

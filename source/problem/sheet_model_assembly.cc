@@ -1,5 +1,5 @@
 // SheetModel: one increment's equations, the elements (element_assembly.h)
-// and the contact coupling assembled into the Newton system.
+// and the contact coupling assembled into the Newton system, and its solve.
 #include <deal.II/base/timer.h>
 #include <deepdraw/problem/element_assembly.h>
 #include <deepdraw/problem/sheet_model.h>
@@ -81,6 +81,24 @@ namespace deepdraw
           load,
           predictor);
       return result;
+    }
+
+
+    void
+    SheetModel::solve(Vector<double> &correction)
+    {
+      // Rows and columns that hold only their diagonal: constrained dofs
+      // (distribute() sets them afterwards) and the multipliers of open
+      // pairs (D60).
+      std::vector<types::global_dof_index> decoupled;
+      if (parameters.linear_solver.leave_out_decoupled)
+      {
+        decoupled = newton_constraints.decoupled_unknowns(discretisation);
+        contact_coupling.add_open_multipliers(decoupled);
+      }
+      system->solve(correction,
+                    contact_coupling.tool_position_unknowns(),
+                    decoupled);
     }
   } // namespace problem
 } // namespace deepdraw

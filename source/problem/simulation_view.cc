@@ -4,6 +4,40 @@ namespace deepdraw
 {
   namespace problem
   {
+    void
+    RunRecord::start_increment(const double search_time)
+    {
+      search_time_at_start = search_time;
+      increment_timer.restart();
+    }
+
+
+    void
+    RunRecord::record_increment(
+      const double                            load_increment,
+      const unsigned int                      iterations,
+      const unsigned int                      cut_backs,
+      const NewtonProgress                   &progress,
+      const solver::LinearSolver::Statistics &statistics,
+      const double                            search_time)
+    {
+      report.search_time         = search_time - search_time_at_start;
+      report.load_increment      = load_increment;
+      report.iterations          = iterations;
+      report.cut_backs           = cut_backs;
+      report.force_residual      = progress.last_force_residual();
+      report.contact_residual    = progress.last_contact_residual();
+      report.plastic_points      = progress.plastic_points;
+      report.contact_changes     = progress.contact_changes;
+      report.assembly_time       = progress.assembly_time;
+      report.solve_time          = progress.solve_time;
+      report.factorized_unknowns = statistics.factorized_unknowns;
+      report.symbolic_analyses   = statistics.symbolic_analyses
+                                 - reported_solver_statistics.symbolic_analyses;
+      reported_solver_statistics = statistics;
+    }
+
+
     SimulationView::SimulationView(const SheetModel           &model,
                                    const RunRecord            &run,
                                    const postprocess::Manager &postprocessors)

@@ -68,7 +68,7 @@ main(int argc, char *argv[])
   problem::FormingProblem::declare_parameters(prm);
   prm.parse_input_from_string(prm_text);
   problem::FormingProblem forming_problem(prm);
-  forming_problem.prepare_increment(0., 0.5);
+  forming_problem.increment_solver().prepare_increment(0., 0.5);
 
   const types::global_dof_index n_u
     = forming_problem.access().sheet().n_displacement_dofs();
@@ -96,9 +96,8 @@ main(int argc, char *argv[])
   Vector<double>     residual(n), plus(n), minus(n);
   FullMatrix<double> tangent;
   deepdraw_test::check_true("residual evaluates",
-                            forming_problem.evaluate_residual(x,
-                                                              residual,
-                                                              &tangent));
+                            forming_problem.increment_solver()
+                              .evaluate_residual(x, residual, &tangent));
   const unsigned int stick = forming_problem.access().contact().n_stick();
   const unsigned int slip  = forming_problem.access().contact().n_slip();
   std::cout << "pairs in stick " << stick << ", in slip " << slip << std::endl;
@@ -120,11 +119,15 @@ main(int argc, char *argv[])
     const double   h         = (j >= n_u && j + 1 < n) ? 1e-3 : 1e-7;
     Vector<double> perturbed = x;
     perturbed[j] += h;
-    forming_problem.evaluate_residual(perturbed, plus, nullptr);
+    forming_problem.increment_solver().evaluate_residual(perturbed,
+                                                         plus,
+                                                         nullptr);
     const unsigned int stick_plus
       = forming_problem.access().contact().n_stick();
     perturbed[j] -= 2 * h;
-    forming_problem.evaluate_residual(perturbed, minus, nullptr);
+    forming_problem.increment_solver().evaluate_residual(perturbed,
+                                                         minus,
+                                                         nullptr);
     if (stick_plus != forming_problem.access().contact().n_stick()
         || stick_plus != stick)
     {

@@ -144,7 +144,9 @@ namespace
     double moment = 0.;
     for (const auto &[fx, x] : end_face)
       moment += fx * (x[2] - z_centre);
-    return {angle / arc, moment, forming_problem->last_residuals()};
+    return {angle / arc,
+            moment,
+            forming_problem->increment_solver().progress().force_residuals};
   }
 
 

@@ -66,9 +66,8 @@ namespace
     Vector<double>     residual(n), plus(n), minus(n);
     FullMatrix<double> tangent;
     deepdraw_test::check_true("residual evaluates",
-                              forming_problem.evaluate_residual(du,
-                                                                residual,
-                                                                &tangent));
+                              forming_problem.increment_solver()
+                                .evaluate_residual(du, residual, &tangent));
 
     const double h         = 1e-7;
     double       max_error = 0., max_entry = 0.;
@@ -76,9 +75,13 @@ namespace
     {
       Vector<double> perturbed = du;
       perturbed[j] += h;
-      forming_problem.evaluate_residual(perturbed, plus, nullptr);
+      forming_problem.increment_solver().evaluate_residual(perturbed,
+                                                           plus,
+                                                           nullptr);
       perturbed[j] -= 2 * h;
-      forming_problem.evaluate_residual(perturbed, minus, nullptr);
+      forming_problem.increment_solver().evaluate_residual(perturbed,
+                                                           minus,
+                                                           nullptr);
       for (unsigned int i = 0; i < n; ++i)
       {
         const double fd = (plus[i] - minus[i]) / (2 * h);

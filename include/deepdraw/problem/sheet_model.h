@@ -100,6 +100,11 @@ namespace deepdraw
       // The trial state back to the committed one (a failed attempt).
       void
       restore_trial_state();
+      // Solves the last assembly's system for a Newton correction (throws
+      // if the solve fails), leaving out the rows that hold only their
+      // diagonal where Linear solver asks it (D60).
+      void
+      solve(Vector<double> &correction);
 
       // Refines the cells the adaptation flagged, carries the committed
       // state over with the contact pairs (D83) and sets the system up.

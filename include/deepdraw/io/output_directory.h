@@ -1,0 +1,24 @@
+// Opening a run's output files as one step that either succeeds or leaves
+// nothing behind (D11: an input error writes nothing).
+#ifndef deepdraw_io_output_directory_h
+#define deepdraw_io_output_directory_h
+
+#include <functional>
+#include <string>
+
+namespace deepdraw
+{
+  namespace io
+  {
+    // Makes `directory` (with its parents) and calls open(), which creates
+    // the files in it. If that fails, a directory made here is removed
+    // again and an InputError is thrown: open()'s own InputError unchanged,
+    // any other failure as "parameter: cannot write results to ...".
+    void
+    open_output_directory(const std::string           &directory,
+                          const std::string           &parameter,
+                          const std::function<void()> &open);
+  } // namespace io
+} // namespace deepdraw
+
+#endif
