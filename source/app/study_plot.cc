@@ -4,8 +4,8 @@
 #include <cstdio>
 #include <cstring>
 #include <deepdraw/app/study_plot.h>
-#include <deepdraw/app/study_run.h>
 #include <deepdraw/app/study_table.h>
+#include <deepdraw/io/gnuplot.h>
 #include <deepdraw/postprocess/table_names.h>
 #include <fstream>
 #include <sstream>
@@ -132,28 +132,7 @@ namespace deepdraw
     std::string
     plot_study(const std::string &directory, const StudyPlotSpec &spec)
     {
-      {
-        std::ofstream file(directory + "/study.gp");
-        file << script(spec);
-        if (!file)
-          return "cannot write " + directory + "/study.gp";
-      }
-      const std::string log   = directory + "/study_gnuplot.log";
-      int               error = 0;
-      const int         code
-        = run_program("gnuplot", {"study.gp"}, directory, log, &error);
-      if (code == 0)
-      {
-        std::remove(log.c_str());
-        return "study.png written";
-      }
-      if (error == ENOENT)
-        return "gnuplot not found, study.png not written (install gnuplot, "
-               "then run 'gnuplot study.gp' in "
-               + directory + ")";
-      if (error != 0)
-        return std::string("cannot start gnuplot: ") + std::strerror(error);
-      return "gnuplot failed, study.png not written (see " + log + ")";
+      return io::plot_with_gnuplot(directory, "study", script(spec));
     }
   } // namespace app
 } // namespace deepdraw

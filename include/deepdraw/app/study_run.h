@@ -34,16 +34,6 @@ namespace deepdraw
     run_deepdraw(const std::string &executable,
                  const std::string &input_prm,
                  const std::string &run_directory);
-
-    // Runs program (searched in PATH) with arguments in directory, its
-    // output to log_file; returns its exit code, or -1 if it could not be
-    // started (errno in *start_error) or was killed.
-    int
-    run_program(const std::string              &program,
-                const std::vector<std::string> &arguments,
-                const std::string              &directory,
-                const std::string              &log_file,
-                int                            *start_error = nullptr);
   } // namespace app
 } // namespace deepdraw
 
