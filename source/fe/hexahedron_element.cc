@@ -326,12 +326,27 @@ namespace deepdraw
       double alpha_base[max_enhanced], step_direction[max_enhanced];
       double base_norm = std::numeric_limits<double>::infinity(), step = 0.;
       bool   restarted = false;
+      // The element's forces are measured against at least 1e-8 of the
+      // forces of its stress at the increment's start, |sigma_n| V^(2/3):
+      // where the increment ends stress-free (a release, D152) its forces
+      // are the round-off of the stresses that cancelled, and a criterion
+      // relative to them alone is never met.
+      double old_force_scale = 0.;
+      {
+        double volume = 0.;
+        for (const double JxW : geometry.JxW)
+          volume += JxW;
+        for (unsigned int q = 0; q < n_weighted_points; ++q)
+          old_force_scale
+            = std::max(old_force_scale, old_history[q].state.stress.norm());
+        old_force_scale *= 1e-8 * std::pow(volume, 2. / 3.);
+      }
       for (unsigned int iteration = 0;; ++iteration)
       {
         if (iteration >= parameters.enhanced_max_iterations)
           return ElementStatus::enhanced_not_converged;
-        points_plastic                  = 0;
-        const ElementStatus status      = integrate(geometry,
+        points_plastic             = 0;
+        const ElementStatus status = integrate(geometry,
                                                du,
                                                alpha,
                                                old_history,
@@ -339,7 +354,7 @@ namespace deepdraw
                                                full_residual,
                                                tangents,
                                                points_plastic);
-        double              force_scale = 0., enhanced_residual = 0., norm = 0.;
+        double force_scale = old_force_scale, enhanced_residual = 0., norm = 0.;
         for (unsigned int i = 0; i < nu; ++i)
           force_scale = std::max(force_scale, std::abs(full_residual[i]));
         for (unsigned int k = 0; k < ne; ++k)
