@@ -110,3 +110,65 @@ def finish(failures):
     if failures:
         sys.exit(1)
     print("PASSED")
+
+
+def write_case(source, work, prm):
+    """Copies the prm `prm` (a path under the sources) to
+    work/case/process.prm with its tool files found in tests/contact/data
+    from there; returns its text."""
+    (work / "case").mkdir(exist_ok=True)
+    text = (source / prm).read_text().replace(
+        "../contact/data", str(source / "tests" / "contact" / "data"))
+    (work / "case" / "process.prm").write_text(text)
+    return text
+
+
+def run_and_resume(deepdraw, work, resumed_at):
+    """Runs case/process.prm into work/full, copies that to work/resumed and
+    resumes it there with --resume. Returns the failures: the resumed run
+    must begin at load `resumed_at` and write every CSV table of the
+    uninterrupted run (comparable_table)."""
+    run([deepdraw, "case/process.prm", "--output-directory", "full"], work)
+    shutil.copytree(work / "full", work / "resumed")
+    log = run([deepdraw, "case/process.prm", "--output-directory", "resumed",
+               "--resume"], work)
+    failures = []
+    if "resumed at load %s" % resumed_at not in log:
+        failures.append("the resumed run did not begin at load %s"
+                        % resumed_at)
+    for table in sorted(p.name for p in (work / "full").glob("*.csv")):
+        same = comparable_table(work / "full" / table) == \
+            comparable_table(work / "resumed" / table)
+        print("%s %s" % ("same" if same else "DIFFERENT", table))
+        if not same:
+            failures.append(table + " differs from the uninterrupted run")
+    return failures
+
+
+class Checks:
+    """The checks of a check.py: each prints its value against the
+    expected one and keeps the failures."""
+
+    def __init__(self):
+        self.failures = []
+
+    def check(self, what, value, expected, tolerance, relative=True):
+        scale = abs(expected) if relative and expected != 0 else 1.0
+        error = abs(value - expected) / scale
+        ok = error <= tolerance
+        print("%-50s %.10g (expected %.10g, error %.2e)%s"
+              % (what, value, expected, error, "" if ok else "  FAILED"))
+        if not ok:
+            self.failures.append(what)
+
+    def exit_code(self):
+        for failure in self.failures:
+            print("FAILED:", failure)
+        return 1 if self.failures else 0
+
+
+def csv_rows(path):
+    """The rows of a CSV table as {column: float}."""
+    with open(path) as f:
+        return [{k: float(v) for k, v in row.items()}
+                for row in csv.DictReader(f)]

@@ -26,7 +26,8 @@ namespace deepdraw
       const SheetDiscretisation                  &sheet,
       const process::PrescribedDisplacements     &prescribed,
       const std::vector<solver::MultiplierBlock> &multiplier_blocks,
-      const types::global_dof_index               n_unknowns)
+      const types::global_dof_index               n_unknowns,
+      const std::vector<types::global_dof_index> &held_dofs)
     {
       // Prescribed dofs; a later entry overrides an earlier one.
       const auto &face_vertices = sheet.face_vertices();
@@ -36,6 +37,8 @@ namespace deepdraw
       for (const process::PrescribedDisplacement &entry : prescribed.entries)
         for (const unsigned int vertex : face_vertices[entry.boundary_id])
           owner[vertex_dofs[vertex][entry.component]] = &entry;
+      for (const types::global_dof_index dof : held_dofs)
+        owner[dof] = nullptr;
       prescribed_dofs.assign(owner.begin(), owner.end());
 
       constrained_multipliers.clear();
@@ -65,8 +68,10 @@ namespace deepdraw
       predictor_constraints.clear();
       for (const auto &[dof, entry] : prescribed_dofs)
       {
-        const Point<3> &X = sheet.dof_initial_position(dof);
         predictor_constraints.add_line(dof);
+        if (entry == nullptr)
+          continue;
+        const Point<3> &X = sheet.dof_initial_position(dof);
         predictor_constraints.set_inhomogeneity(
           dof,
           prescribed.value(*entry, X, new_load)

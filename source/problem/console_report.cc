@@ -67,6 +67,18 @@ namespace deepdraw
                 << stage.name << "' (" << process::to_string(stage.kind)
                 << ") from load " << format_load(stage.start_load) << " to "
                 << format_load(stage.end_load) << std::endl;
+      // The node each release support found (D151).
+      const std::vector<unsigned int> &nodes
+        = simulation.state().release_support_vertices;
+      const std::vector<dealii::Point<3>> &x
+        = simulation.sheet().triangulation().get_vertices();
+      for (unsigned int s = 0; s < nodes.size() && s < stage.supports.size();
+           ++s)
+        std::cout << "  support '" << stage.supports[s].item << "': node "
+                  << nodes[s] << " at (" << x[nodes[s]][0] << ", "
+                  << x[nodes[s]][1] << ", " << x[nodes[s]][2] << "), held "
+                  << process::component_names(stage.supports[s].components)
+                  << std::endl;
     }
 
 

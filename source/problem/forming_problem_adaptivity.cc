@@ -11,6 +11,10 @@ namespace deepdraw
     bool
     FormingProblem::adapt_mesh(const bool last_increment, std::string &reason)
     {
+      // A release stage keeps its mesh: its loads and supports belong to
+      // the nodes it began with (D150).
+      if (model->stage().kind == process::Stage::Kind::release)
+        return true;
       if (!adaptation->flag_cells(model->sheet(),
                                   model->state(),
                                   model->contact(),

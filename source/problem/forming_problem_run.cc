@@ -192,8 +192,15 @@ namespace deepdraw
         console.refined(model->sheet().triangulation().n_active_cells(),
                         adaptation->records().back().iterations);
       table_sizes = state::csv_table_sizes(parameters.output.output_directory);
+      // The end of a stage that another follows has its own checkpoint,
+      // written once the stage has ended (end_stage): a resume then begins
+      // the next stage with what it takes over (D150).
+      const bool stage_checkpoint_follows
+        = run_record.at_stage_end
+          && committed.stage + 1 < parameters.stages.size();
       if (parameters.checkpoint.interval > 0
-          && committed.increment_number % parameters.checkpoint.interval == 0)
+          && committed.increment_number % parameters.checkpoint.interval == 0
+          && !stage_checkpoint_follows)
         save_checkpoint();
     }
 
@@ -220,7 +227,9 @@ namespace deepdraw
     FormingProblem::end_stage()
     {
       postprocessors.end_stage(*view);
-      model->state().stage_completed = true;
+      const std::string failure = model->end_stage();
+      if (!failure.empty())
+        stop_cleanly(failure);
       table_sizes = state::csv_table_sizes(parameters.output.output_directory);
       // A later run can begin the next stage from here (D101).
       if (model->state().stage + 1 < parameters.stages.size())

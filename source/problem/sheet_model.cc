@@ -33,6 +33,7 @@ namespace deepdraw
                                       parameters.geometry.thickness,
                                       parameters.geometry.symmetry_plane_x,
                                       parameters.geometry.symmetry_plane_y);
+      check_release_supports();
       for (const process::Stage &stage : parameters.stages)
         for (const process::PrescribedDisplacement &entry :
              stage.prescribed.entries)
@@ -82,7 +83,8 @@ namespace deepdraw
       newton_constraints.set_up(discretisation,
                                 stage().prescribed,
                                 layout.multiplier_blocks,
-                                n);
+                                n,
+                                held_dofs());
       layout.dof_handler           = &discretisation.dof_handler();
       layout.constraints           = &newton_constraints.homogeneous();
       layout.n_unknowns            = n;
@@ -145,11 +147,15 @@ namespace deepdraw
         new_tools[k] = !contact_coupling.takes_part(k);
       // A stage that releases what the last one carried converges against
       // the forces it releases, not against the forces that are left
-      // (D102).
-      committed.stage_force_scale = force_scale();
+      // (D102); as the last stage ended, also after a resume.
+      committed.stage_force_scale = committed.end_force_scale >= 0.
+                                      ? committed.end_force_scale
+                                      : force_scale();
       committed.stage             = index;
       committed.stage_completed   = false;
+      committed.end_force_scale   = -1.;
       contact_coupling.begin_stage(index);
+      find_release_supports();
       set_up_system();
       carry_contact_state(snapshot, {}, {});
       // A force along a component the stage prescribes is the constraint's
@@ -339,7 +345,8 @@ namespace deepdraw
       // set up.
       if (!saved.refinements.empty())
         discretisation.replay_refinements(saved.refinements);
-      committed.stage = saved.stage;
+      committed.stage                    = saved.stage;
+      committed.release_support_vertices = saved.release_support_vertices;
       contact_coupling.begin_stage(saved.stage);
       set_up_system();
       check_size("vertices",

@@ -65,6 +65,8 @@ namespace deepdraw
                             matrix,
                             system->rhs(),
                             internal_forces);
+      if (stage().releases_forces())
+        add_release_loads(constraints_used, load, system->rhs());
       AssemblyResult result;
       result.status         = elements.status;
       result.plastic_points = elements.plastic_points;

@@ -25,6 +25,53 @@ namespace deepdraw
         return text.str();
       }
 
+      // Release method and Release supports (D150, D151): only in a release
+      // stage; a force release removes every tool, so it takes no tool
+      // settings.
+      void
+      parse_release(ParameterHandler &prm, Stage &stage)
+      {
+        const std::string &prefix  = stage.parameter_prefix;
+        const std::string  method  = prm.get("Release method");
+        const std::string  support = prm.get("Release supports");
+        if (stage.kind != Stage::Kind::release)
+        {
+          if (method != "force" || !Utilities::trim(support).empty())
+            throw InputError(
+              prefix
+              + (method != "force" ? "Release method" : "Release supports")
+              + " is set, but the stage is not a release "
+                "(Kind = release)");
+          return;
+        }
+        stage.release_method = method == "tool retraction"
+                                 ? Stage::ReleaseMethod::tool_retraction
+                                 : Stage::ReleaseMethod::force;
+        stage.supports
+          = parse_release_supports(support, prefix + "Release supports");
+        if (stage.release_method == Stage::ReleaseMethod::tool_retraction)
+          return;
+        const std::string tools = Utilities::trim(prm.get("Tools"));
+        if (tools != "all" && tools != "none")
+          throw InputError(prefix + "Tools = '" + io::one_line(tools)
+                           + "': a force release removes every tool; allowed "
+                             "are 'all' or 'none' (or Release method = tool "
+                             "retraction)");
+        stage.all_tools = false;
+        stage.tools.clear();
+        for (unsigned int k = 0; k < stage.tool_settings.size(); ++k)
+          if (!stage.tool_settings[k].control.empty()
+              || !stage.tool_settings[k].translation.empty())
+            throw InputError(prefix + "Tool " + std::to_string(k + 1) + "/"
+                             + (stage.tool_settings[k].control.empty()
+                                  ? "Translation"
+                                  : "Control")
+                             + " is set, but a force release removes every "
+                               "tool (Release method = tool retraction moves "
+                               "them)");
+      }
+
+
       // The entries of one named stage slot (the current subsection).
       Stage
       parse_stage(ParameterHandler    &prm,
@@ -34,11 +81,12 @@ namespace deepdraw
                   const StageDefaults &defaults)
       {
         Stage stage;
-        stage.parameter_prefix  = prefix;
-        stage.name              = Utilities::trim(prm.get("Name"));
-        stage.kind              = Stage::Kind::forming;
-        stage.start_load        = start_load;
-        stage.end_load          = end_load;
+        stage.parameter_prefix = prefix;
+        stage.name             = Utilities::trim(prm.get("Name"));
+        stage.kind       = prm.get("Kind") == "release" ? Stage::Kind::release
+                                                        : Stage::Kind::forming;
+        stage.start_load = start_load;
+        stage.end_load   = end_load;
         const std::string tools = Utilities::trim(prm.get("Tools"));
         stage.all_tools         = tools == "all";
         if (tools != "all" && tools != "none")
@@ -72,6 +120,7 @@ namespace deepdraw
              Utilities::trim(prm.get("Translation"))});
           prm.leave_subsection();
         }
+        parse_release(prm, stage);
         return stage;
       }
     } // namespace
@@ -95,8 +144,17 @@ namespace deepdraw
       {
         case Stage::Kind::forming:
           return "forming";
+        case Stage::Kind::release:
+          return "release";
       }
       return "forming";
+    }
+
+
+    bool
+    Stage::releases_forces() const
+    {
+      return kind == Kind::release && release_method == ReleaseMethod::force;
     }
 
 
@@ -117,9 +175,38 @@ namespace deepdraw
                           "Process/Final load.");
         prm.declare_entry("Kind",
                           "forming",
-                          Patterns::Selection("forming"),
+                          Patterns::Selection("forming|release"),
                           "What the stage does: 'forming', the tools move "
-                          "and press as given and the sheet follows.");
+                          "and press as given and the sheet follows; "
+                          "'release', the sheet springs back (Release "
+                          "method), held only by the symmetry planes, the "
+                          "stage's Prescribed displacements and its Release "
+                          "supports, which must stop every rigid-body mode.");
+        prm.declare_entry("Release method",
+                          "force",
+                          Patterns::Selection("force|tool retraction"),
+                          "A release stage: 'force', every tool leaves and "
+                          "the forces on the sheet at the end of the stage "
+                          "before (contact, friction, the reactions of the "
+                          "faces this stage no longer holds) become nodal "
+                          "loads, ramped linearly to zero over the stage's "
+                          "load range; 'tool retraction', the tools move "
+                          "away along the stage's Tool N/Translation with "
+                          "contact active, and every pair must be open at "
+                          "the stage's end.");
+        prm.declare_entry("Release supports",
+                          "",
+                          Patterns::Anything(),
+                          "A release stage: points whose nearest sheet node "
+                          "(at the stage's start, current coordinates) is "
+                          "held where it stands in the given directions, "
+                          "'point(X, Y, Z): COMPONENTS; ...' with COMPONENTS "
+                          "one or more of ux, uy, uz, e.g. the 3-2-1 support "
+                          "'point(0, 0, 0): ux uy uz; point(50, 0, 0): uy "
+                          "uz; point(0, 30, 0): uz' (mm). With the symmetry "
+                          "planes and the Prescribed displacements they must "
+                          "stop the 3 translations and 3 rotations of the "
+                          "sheet.");
         prm.declare_entry("Final load",
                           "",
                           Patterns::Anything(),
@@ -195,7 +282,9 @@ namespace deepdraw
              {"Final load", ""},
              {"Tools", "all"},
              {"Blank holder force", ""},
-             {"Prescribed displacements", ""}};
+             {"Prescribed displacements", ""},
+             {"Release method", "force"},
+             {"Release supports", ""}};
         const auto check = [&](const std::string &path)
         {
           for (const auto &[name, default_value] : entries)
@@ -311,6 +400,11 @@ namespace deepdraw
                                      start);
         Stage        stage = parse_stage(prm, prefix, start, end, defaults);
         prm.leave_subsection();
+        if (stage.kind == Stage::Kind::release && stages.empty())
+          throw InputError(prefix
+                           + "Kind = release: the first stage has nothing "
+                             "to release; a release follows a forming "
+                             "stage");
         for (const Stage &other : stages)
           if (other.name == stage.name)
             throw InputError(prefix + "Name = '" + io::one_line(stage.name)

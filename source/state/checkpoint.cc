@@ -15,7 +15,11 @@ namespace deepdraw
   {
     namespace
     {
-      constexpr char tag[] = "deepdraw-checkpoint-2";
+      constexpr char tag[] = "deepdraw-checkpoint-3";
+      // Before releases (D150): the same layout, its state of format 4
+      // (SimulationState::read tells them apart).
+      constexpr char tag_before_release[] = "deepdraw-checkpoint-2";
+      static_assert(sizeof(tag) == sizeof(tag_before_release));
       // Before stages and post-processors (D101): the output progress was
       // the VTU counter and the PVD steps, now the "visualization"
       // post-processor's data, then the table sizes.
@@ -206,7 +210,10 @@ namespace deepdraw
         stream.read(read_tag, sizeof(tag));
         const bool before_stages
           = stream && std::string(read_tag) == tag_before_stages;
-        if (!stream || (std::string(read_tag) != tag && !before_stages))
+        if (!stream
+            || (std::string(read_tag) != tag
+                && std::string(read_tag) != tag_before_release
+                && !before_stages))
           throw std::runtime_error("not a deepdraw checkpoint");
         checkpoint.parameters = io::read_string(stream, source);
         checkpoint.state.read(stream);

@@ -13,10 +13,14 @@ namespace deepdraw
     {
       // A plain binary image in this machine's byte order, with a tag and
       // counts, so that a truncated or foreign stream is detected.
-      constexpr char tag[] = "deepdraw-state-4";
+      constexpr char tag[] = "deepdraw-state-5";
+      // Written before releases (D150): no end force scale, release loads
+      // or supports.
+      constexpr char tag_before_release[] = "deepdraw-state-4";
       // Written before stages existed: no stage, no tool origins (D101).
       constexpr char tag_without_stages[] = "deepdraw-state-3";
       static_assert(sizeof(tag) == sizeof(tag_without_stages));
+      static_assert(sizeof(tag) == sizeof(tag_before_release));
 
       constexpr char source[] = "simulation state: the stream";
 
@@ -159,6 +163,13 @@ namespace deepdraw
       for (const auto *values :
            {&contact.tool_origin, &contact.tool_translation})
         put_doubles(stream, values->data(), values->size());
+      put(stream, end_force_scale);
+      put_vector(stream, release_loads);
+      put(stream, release_support_vertices.size());
+      stream.write(reinterpret_cast<const char *>(
+                     release_support_vertices.data()),
+                   release_support_vertices.size() * sizeof(unsigned int));
+      put_vector(stream, release_start_displacement);
       if (!stream)
         throw std::runtime_error("simulation state: writing failed");
     }
@@ -169,7 +180,10 @@ namespace deepdraw
     {
       char read_tag[sizeof(tag)] = {};
       stream.read(read_tag, sizeof(tag));
-      const bool with_stages = stream && std::string(read_tag) == tag;
+      const bool with_release = stream && std::string(read_tag) == tag;
+      const bool with_stages
+        = with_release
+          || (stream && std::string(read_tag) == tag_before_release);
       if (!with_stages
           && (!stream || std::string(read_tag) != tag_without_stages))
         throw std::runtime_error("simulation state: not a deepdraw state");
@@ -225,6 +239,10 @@ namespace deepdraw
       stage             = 0;
       stage_completed   = false;
       stage_force_scale = 0.;
+      end_force_scale   = -1.;
+      release_loads.reinit(0);
+      release_support_vertices.clear();
+      release_start_displacement.reinit(0);
       contact.tool_origin.assign(3 * contact.tool_position.size(), 0.);
       contact.tool_translation.clear();
       if (!with_stages)
@@ -239,6 +257,19 @@ namespace deepdraw
         values->resize(get_count(stream));
         get_values(stream, values->data(), values->size());
       }
+      if (!with_release)
+        return;
+      get(stream, end_force_scale);
+      get_vector(stream, release_loads);
+      const std::size_t n_supports = get_count(stream);
+      if (n_supports > 100000)
+        throw std::runtime_error("simulation state: bad support block");
+      release_support_vertices.resize(n_supports);
+      io::read_bytes(stream,
+                     release_support_vertices.data(),
+                     n_supports * sizeof(unsigned int),
+                     source);
+      get_vector(stream, release_start_displacement);
     }
   } // namespace state
 } // namespace deepdraw

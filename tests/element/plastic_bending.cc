@@ -38,6 +38,8 @@
 //   the default enhanced tolerance 1e-4; 1e-12 gives the same iterates to
 //   three digits).
 #include "contact/forming_test_tools.h"
+#include "element/plane_strain_fibre.h"
+#include "element/strip_sections.h"
 #include "test_utilities.h"
 
 #include <deal.II/base/mpi.h>
@@ -101,9 +103,8 @@ namespace
     const auto &X = forming_problem->access().sheet().initial_vertices();
     const auto &u = forming_problem->access().state().total_displacement;
     const auto &f = forming_problem->access().internal_force();
-    // Current position of the vertices on y = 0 by initial (x, z).
-    std::map<std::pair<long, long>, Point<3>> position;
-    std::vector<std::pair<double, Point<3>>>  end_face; // (f_x, x)
+    // The end face's nodal forces f_x at their current positions.
+    std::vector<std::pair<double, Point<3>>> end_face;
     forming_test::for_each_vertex(
       *forming_problem,
       [&](const auto &cell, const unsigned int v, const unsigned int vertex)
@@ -111,29 +112,9 @@ namespace
         Point<3> x = X[vertex];
         for (unsigned int c = 0; c < 3; ++c)
           x[c] += u[cell->vertex_dof_index(v, c)];
-        if (std::abs(X[vertex][1]) < 1e-9)
-          position[{std::lround(X[vertex][0] * 1e3),
-                    std::lround(X[vertex][2] * 1e3)}]
-            = x;
         if (std::abs(X[vertex][0] - length) < 1e-9)
           end_face.emplace_back(f[cell->vertex_dof_index(v, 0)], x);
       });
-    // Section rotation and mid-point at initial x0 (mm).
-    const auto section = [&](const double x0, Point<3> &middle)
-    {
-      const Point<3> &bottom = position.at({std::lround(x0 * 1e3), 0});
-      const Point<3> &top
-        = position.at({std::lround(x0 * 1e3), std::lround(thickness * 1e3)});
-      middle = 0.5 * (bottom + top);
-      return std::atan2(top[0] - bottom[0], top[2] - bottom[2]);
-    };
-    Point<3>     middle_a, middle_b;
-    const double rotation_a = section(6., middle_a);
-    const double rotation_b = section(18., middle_b);
-    const double angle      = rotation_b - rotation_a;
-    // Arc of a circle through the two mid-points with that angle.
-    const double arc
-      = middle_a.distance(middle_b) * (0.5 * angle) / std::sin(0.5 * angle);
 
     double z_centre = 0., x_centre = 0.;
     for (const auto &[fx, x] : end_face)
@@ -144,48 +125,10 @@ namespace
     double moment = 0.;
     for (const auto &[fx, x] : end_face)
       moment += fx * (x[2] - z_centre);
-    return {angle / arc,
+    return {bending_reference::StripSections(*forming_problem, thickness)
+              .curvature(6., 18.),
             moment,
             forming_problem->increment_solver().progress().force_residuals};
-  }
-
-
-  // sigma_xx of the plane-strain fibre along eps_xx = 0 -> eps_max, sampled
-  // every step: table[k] at eps = k * eps_max / n_steps.
-  std::vector<double>
-  fibre_stress_table(const double eps_max, const unsigned int n_steps)
-  {
-    ParameterHandler prm;
-    prm.enter_subsection("Material");
-    material::MaterialParameters::declare_parameters(prm);
-    prm.parse_input_from_string("set Hill F = 0.5\nset Hill G = 0.5\n"
-                                "set Hill H = 0.5\nset Hill L = 1.5\n"
-                                "set Hill M = 1.5\nset Hill N = 1.5\n");
-    material::MaterialParameters parameters;
-    parameters.parse_parameters(prm);
-    prm.leave_subsection();
-    const material::HillPlasticity material(parameters);
-
-    std::vector<double>          table(n_steps + 1, 0.);
-    material::MaterialPointState state, next;
-    SymmetricTensor<4, 3>        tangent;
-    for (unsigned int k = 1; k <= n_steps; ++k)
-    {
-      SymmetricTensor<2, 3> increment;
-      increment[0][0] = eps_max / n_steps;
-      bool plastic    = false;
-      // Newton on the thickness strain increment: sigma_zz = 0.
-      for (unsigned int iteration = 0; iteration < 20; ++iteration)
-      {
-        material.update(state, increment, next, tangent, plastic);
-        if (std::abs(next.stress[2][2]) < 1e-10)
-          break;
-        increment[2][2] -= next.stress[2][2] / tangent[2][2][2][2];
-      }
-      state    = next;
-      table[k] = state.stress[0][0];
-    }
-    return table;
   }
 
 
@@ -193,26 +136,9 @@ namespace
   double
   reference_moment(const double kappa)
   {
-    const double       eps_max = std::log(1. + kappa * thickness / 2.) * 1.001;
-    const unsigned int n_steps = 20000, n_fibres = 4000;
-    const std::vector<double> table  = fibre_stress_table(eps_max, n_steps);
-    const auto                stress = [&](const double eps)
-    {
-      const double s = std::abs(eps) / eps_max * n_steps;
-      const auto   k = std::min<unsigned int>(s, n_steps - 1);
-      const double value
-        = table[k] + (s - k) * (table[k + 1] - table[k]); // odd in eps
-      return eps < 0. ? -value : value;
-    };
-    double moment = 0.;
-    for (unsigned int i = 0; i <= n_fibres; ++i)
-    {
-      const double z = -thickness / 2. + thickness * i / n_fibres;
-      const double w
-        = (i == 0 || i == n_fibres ? 0.5 : 1.) * thickness / n_fibres;
-      moment += w * stress(std::log(1. + kappa * z)) * z;
-    }
-    return width * moment;
+    const double eps_max = std::log(1. + kappa * thickness / 2.) * 1.001;
+    return bending_reference::PlaneStrainFibre(von_mises, eps_max)
+      .moment(kappa, thickness, width);
   }
 } // namespace
 

@@ -596,6 +596,42 @@ def stage_and_output_cases(source):
                                    "1"))),
              exit=2, messages=["Process/Stage 2/Load stepping/Minimum "
                                "increment must not exceed"]),
+        dict(name="release_with_a_free_rigid_body_mode",
+             files=cup(two, stage(2, ("Name", "springback"),
+                                  ("Kind", "release"))), exit=2,
+             messages=["Process/Stage 2/Release supports = '': the released "
+                       "sheet is free to move (translation along z): the "
+                       "symmetry planes, the stage's Prescribed displacements "
+                       "and its supports stop 5 of the 6 rigid-body modes"]),
+        dict(name="release_support_unreadable",
+             files=cup(two, stage(2, ("Name", "springback"),
+                                  ("Kind", "release"),
+                                  ("Release supports", "point(0, 0): uz"))),
+             exit=2, messages=["Process/Stage 2/Release supports: cannot read "
+                               "'point(0, 0): uz'; expected 'point(X, Y, Z): "
+                               "COMPONENTS'"]),
+        dict(name="release_support_unknown_component",
+             files=cup(two, stage(2, ("Name", "springback"),
+                                  ("Kind", "release"),
+                                  ("Release supports", "point(0, 0, 0): uw"))),
+             exit=2, messages=["Process/Stage 2/Release supports: 'uw' in "
+                               "'point(0, 0, 0): uw': allowed are ux, uy, uz"]),
+        dict(name="release_supports_in_a_forming_stage",
+             files=cup(two, stage(2, ("Name", "more"),
+                                  ("Release supports", "point(0, 0, 0): uz"))),
+             exit=2, messages=["Process/Stage 2/Release supports is set, but "
+                               "the stage is not a release (Kind = release)"]),
+        dict(name="force_release_with_tools",
+             files=cup(two, stage(2, ("Name", "springback"),
+                                  ("Kind", "release"), ("Tools", "die"),
+                                  ("Release supports", "point(0, 0, 0): uz"))),
+             exit=2, messages=["Process/Stage 2/Tools = 'die': a force release "
+                               "removes every tool; allowed are 'all' or "
+                               "'none'"]),
+        dict(name="release_as_first_stage",
+             files=cup(stage(1, ("Name", "springback"), ("Kind", "release"))),
+             exit=2, messages=["Process/Stage 1/Kind = release: the first "
+                               "stage has nothing to release"]),
         dict(name="unknown_postprocessor",
              files=cup(sub("Postprocess", "List of postprocessors",
                            "statistics, wrinkles")), exit=2,

@@ -93,6 +93,7 @@ namespace
        {"Adaptivity/Jump threshold", "0"},
        {"Adaptivity/Curvature threshold", ""},
        {"Output/Thickness profile travels", "0"},
+       {"Postprocess/Section profile/Number of points", ""},
        {"Contact/Friction coefficient", "0"},
        {"Contact/Augmentation parameter", "0"},
        {"Contact/Augmentation scaling", ""},

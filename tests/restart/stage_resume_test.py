@@ -21,29 +21,13 @@ import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
 import script_test  # noqa: E402
-from script_test import comparable_table, run, snapshot  # noqa: E402
+from script_test import run, snapshot  # noqa: E402
 
 def main():
     args, source, work = script_test.start(__doc__)
-    prm = source / "tests" / "stages" / "press_lift_press.prm"
-    (work / "case").mkdir()
-    text = prm.read_text().replace("../contact/data",
-                                   str(source / "tests" / "contact" / "data"))
-    (work / "case" / "process.prm").write_text(text)
-    run([args.deepdraw, "case/process.prm", "--output-directory", "full"],
-        work)
-    shutil.copytree(work / "full", work / "resumed")
-    log = run([args.deepdraw, "case/process.prm", "--output-directory",
-               "resumed", "--resume"], work)
-    failures = []
-    if "resumed at load 2" not in log:
-        failures.append("the resumed run did not start at the end of stage 2")
-    for table in sorted(p.name for p in (work / "full").glob("*.csv")):
-        same = comparable_table(work / "full" / table) == \
-            comparable_table(work / "resumed" / table)
-        print("%s %s" % ("same" if same else "DIFFERENT", table))
-        if not same:
-            failures.append(table + " differs from the uninterrupted run")
+    text = script_test.write_case(source, work,
+                                  "tests/stages/press_lift_press.prm")
+    failures = script_test.run_and_resume(args.deepdraw, work, 2)
 
     # A later stage may change: twice the holder's travel in stage 3.
     shutil.copytree(work / "full", work / "changed")

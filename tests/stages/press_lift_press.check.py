@@ -22,30 +22,21 @@ force F shortens it by delta = T F / (E A) (small strain).
 The load stepping of each stage: 0.5 in the first two, the third's own
 0.25: the increments end at 0.5, 1, 1.5, 2, 2.25, 2.5, 2.75, 3.
 """
-import csv
+import pathlib
 import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
+from script_test import Checks, csv_rows as rows  # noqa: E402
 
 E, A, T = 71000.0, 4.0, 0.5
 STIFFNESS = E * A / T
 DELTA_1 = 30.0 / STIFFNESS
 
 
-def rows(path):
-    with open(path) as f:
-        return [{k: float(v) for k, v in row.items()} for row in csv.DictReader(f)]
-
-
 def main(output):
-    failures = []
-
-    def check(what, value, expected, tolerance, relative=True):
-        scale = abs(expected) if relative and expected != 0 else 1.0
-        error = abs(value - expected) / scale
-        ok = error <= tolerance
-        print("%-50s %.10g (expected %.10g, error %.2e)%s"
-              % (what, value, expected, error, "" if ok else "  FAILED"))
-        if not ok:
-            failures.append(what)
+    checks = Checks()
+    check = checks.check
+    failures = checks.failures
 
     tools = rows(output + "/tools.csv")
     loads = [row["load"] for row in tools][1:]
@@ -77,9 +68,7 @@ def main(output):
             check("t = %g: holder force" % t, -row["holder_Fz"], force, 2e-3)
             check("t = %g: die force" % t, row["die_Fz"], -row["holder_Fz"],
                   1e-9)
-    for failure in failures:
-        print("FAILED:", failure)
-    return 1 if failures else 0
+    return checks.exit_code()
 
 
 if __name__ == "__main__":

@@ -25,12 +25,14 @@ namespace deepdraw
       // (kept by reference until the next set_up) and the contact pairs;
       // n_unknowns counts all Newton unknowns. The homogeneous constraints
       // are then complete; a later entry overrides an earlier one where
-      // two constrain the same dof.
+      // two constrain the same dof. held_dofs (a release stage's supports,
+      // D151) are held where they stand, after the entries.
       void
       set_up(const SheetDiscretisation                  &sheet,
              const process::PrescribedDisplacements     &prescribed,
              const std::vector<solver::MultiplierBlock> &multiplier_blocks,
-             types::global_dof_index                     n_unknowns);
+             types::global_dof_index                     n_unknowns,
+             const std::vector<types::global_dof_index> &held_dofs = {});
 
       // The predictor constraints of the increment [old_load, new_load]:
       // the prescribed dofs move by the change of their expressions.
@@ -59,7 +61,8 @@ namespace deepdraw
       decoupled_unknowns(const SheetDiscretisation &sheet) const;
 
     private:
-      // Prescribed dofs with their entry (in the set_up() argument).
+      // Prescribed dofs with their entry (in the set_up() argument; none:
+      // held where it stands).
       std::vector<std::pair<types::global_dof_index,
                             const process::PrescribedDisplacement *>>
                                            prescribed_dofs;

@@ -71,6 +71,16 @@ namespace deepdraw
       begin_stage(unsigned int index);
       const process::Stage &
       stage() const;
+      // The stage ends: the force scale the next stage begins with (D102),
+      // before a force release the forces it releases (D150); a tool
+      // retraction must have opened every pair. Returns "" or why the run
+      // cannot go on.
+      std::string
+      end_stage();
+      // A force release's loads at load t: the released forces times
+      // (t_end - t) / (t_end - t_start) (sheet_model_release.cc).
+      double
+      release_factor(double load) const;
 
       // The prescribed increments and tool positions of [old_load,
       // new_load].
@@ -156,6 +166,27 @@ namespace deepdraw
       n_unknowns() const;
 
     private:
+      // Release stages (sheet_model_release.cc, D150, D151). Input time:
+      // every release stage's symmetry planes, prescribed faces and
+      // supports (at their points) stop the six rigid-body modes; throws
+      // InputError naming Release supports.
+      void
+      check_release_supports() const;
+      // At a release stage's start: the node of each support, nearest to
+      // its point where the sheet stands, and the six modes stopped by the
+      // nodes found (InputError if not: the stage cannot begin).
+      void
+      find_release_supports();
+      // The displacement dofs the supports hold (none outside a release).
+      std::vector<types::global_dof_index>
+      held_dofs() const;
+      // rhs += the release loads at `load` on the rows the constraints
+      // leave free.
+      void
+      add_release_loads(const AffineConstraints<double> &constraints,
+                        double                           load,
+                        Vector<double>                  &rhs) const;
+
       // The initial state on the blank's mesh.
       void
       initialize_state();

@@ -10,6 +10,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <deepdraw/process/prescribed_displacements.h>
+#include <deepdraw/process/release_supports.h>
 #include <deepdraw/solver/increment_control.h>
 #include <string>
 #include <vector>
@@ -38,7 +39,20 @@ namespace deepdraw
     {
       enum class Kind
       {
-        forming
+        forming,
+        // Springback (D150): the tools leave and the forces that held the
+        // sheet are released, or the tools move away.
+        release
+      };
+      enum class ReleaseMethod
+      {
+        // The nodal forces on the sheet at the end of the stage before
+        // (contact, friction, the reactions of the faces it held) become
+        // loads, ramped to zero over the stage's load range.
+        force,
+        // The tools move away along the stage's translations, contact
+        // active, until every pair is open.
+        tool_retraction
       };
 
       std::string name;
@@ -53,6 +67,11 @@ namespace deepdraw
       std::string blank_holder_force           = "0";
       std::string blank_holder_force_parameter = "Process/Blank holder force";
       PrescribedDisplacements prescribed;
+      // A release stage: how, and the points that stop the sheet's
+      // rigid-body modes (with the symmetry planes and the prescribed
+      // faces).
+      ReleaseMethod               release_method = ReleaseMethod::force;
+      std::vector<ReleaseSupport> supports;
       // Its final_load is end_load.
       solver::IncrementControlParameters load_stepping;
       // One per tool slot.
@@ -65,6 +84,9 @@ namespace deepdraw
       // read (D50): 11 loads from start_load to end_load.
       std::vector<double>
       check_loads() const;
+      // A release stage whose forces are released as loads.
+      bool
+      releases_forces() const;
     };
 
     std::string

@@ -57,6 +57,20 @@ namespace deepdraw
       // force F_ref of doc/theory.md §5.2 is at least this, D102; 0 in the
       // first stage).
       double stage_force_scale = 0.;
+      // The force scale of the model when the stage ended (negative: not
+      // known, a checkpoint of state format 4); the next stage's
+      // stage_force_scale, the same after a resume between the stages.
+      double end_force_scale = -1.;
+      // A force release (D150): the nodal forces on the sheet at the end of
+      // the stage before it (displacement dofs), released as loads that
+      // fall linearly to zero over the stage; empty in other stages.
+      Vector<double> release_loads;
+      // A release stage: the sheet node of each of its supports, found at
+      // the stage's start (process::ReleaseSupport, D151).
+      std::vector<unsigned int> release_support_vertices;
+      // A release stage: the total displacement at its start (the
+      // springback is the displacement since then).
+      Vector<double> release_start_displacement;
 
       // Binary image of all of the above; read() throws std::runtime_error
       // if the stream is not one (or was cut short).

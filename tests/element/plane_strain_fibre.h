@@ -1,0 +1,98 @@
+// The fibre of a strip bent in plane strain (doc/theory.md §9.3): eps_yy =
+// 0, sigma_zz = 0, loaded monotonically along eps_xx, its stress from the
+// material's own return mapping (independent of the element), and the
+// moment of a section, b int sigma_xx(ln(1 + kappa z)) z dz. Shared by
+// tests/element/plastic_bending.cc and tests/springback/.
+#ifndef deepdraw_tests_element_plane_strain_fibre_h
+#define deepdraw_tests_element_plane_strain_fibre_h
+
+#include <algorithm>
+#include <cmath>
+#include <deal.II/base/parameter_handler.h>
+#include <deepdraw/material/hill_plasticity.h>
+#include <string>
+#include <vector>
+
+namespace bending_reference
+{
+  using namespace dealii;
+
+  class PlaneStrainFibre
+  {
+  public:
+    // material_prm: entries of subsection Material; the path eps_xx = 0 ->
+    // eps_max in n_steps steps.
+    PlaneStrainFibre(const std::string &material_prm,
+                     const double       eps_max,
+                     const unsigned int n_steps = 20000)
+        : eps_max(eps_max)
+        , table(n_steps + 1, 0.)
+    {
+      ParameterHandler prm;
+      prm.enter_subsection("Material");
+      deepdraw::material::MaterialParameters::declare_parameters(prm);
+      prm.parse_input_from_string(material_prm);
+      parameters.parse_parameters(prm);
+      prm.leave_subsection();
+      const deepdraw::material::HillPlasticity material(parameters);
+
+      deepdraw::material::MaterialPointState state, next;
+      SymmetricTensor<4, 3>                  tangent;
+      for (unsigned int k = 1; k <= n_steps; ++k)
+      {
+        SymmetricTensor<2, 3> increment;
+        increment[0][0] = eps_max / n_steps;
+        bool plastic    = false;
+        // Newton on the thickness strain increment: sigma_zz = 0.
+        for (unsigned int iteration = 0; iteration < 20; ++iteration)
+        {
+          material.update(state, increment, next, tangent, plastic);
+          if (std::abs(next.stress[2][2]) < 1e-10)
+            break;
+          increment[2][2] -= next.stress[2][2] / tangent[2][2][2][2];
+        }
+        state    = next;
+        table[k] = state.stress[0][0];
+      }
+    }
+
+    // sigma_xx at the logarithmic strain eps (|eps| <= eps_max), odd in
+    // eps (the material is symmetric in tension and compression).
+    double
+    stress(const double eps) const
+    {
+      const unsigned int n     = table.size() - 1;
+      const double       s     = std::abs(eps) / eps_max * n;
+      const auto         k     = std::min<unsigned int>(s, n - 1);
+      const double       value = table[k] + (s - k) * (table[k + 1] - table[k]);
+      return eps < 0. ? -value : value;
+    }
+
+    // b int sigma_xx(ln(1 + kappa z)) z dz over the thickness t
+    // (trapezoidal rule on n_fibres fibres).
+    double
+    moment(const double       kappa,
+           const double       thickness,
+           const double       width,
+           const unsigned int n_fibres = 4000) const
+    {
+      double moment = 0.;
+      for (unsigned int i = 0; i <= n_fibres; ++i)
+      {
+        const double z = -thickness / 2. + thickness * i / n_fibres;
+        const double w
+          = (i == 0 || i == n_fibres ? 0.5 : 1.) * thickness / n_fibres;
+        moment += w * stress(std::log(1. + kappa * z)) * z;
+      }
+      return width * moment;
+    }
+
+    deepdraw::material::MaterialParameters parameters;
+
+  private:
+    double              eps_max;
+    std::vector<double> table;
+  };
+} // namespace bending_reference
+
+#endif
