@@ -428,6 +428,22 @@ def run_time_cases(source):
              messages=["Boundary conditions/Prescribed displacements: "
                        "'xmax: ux = sqrt(abs(t-0.55)-0.01)' is not finite at "
                        "t = 0.5"]),
+        dict(name="release_supports_find_one_node",
+             files=bar(sub("Geometry", "Symmetry planes", ""),
+                       sub("Boundary conditions", "Prescribed displacements",
+                           "xmin: ux = 0; ymin: uy = 0; zmin: uz = 0; "
+                           "xmax: ux = 10*(exp(0.5*t)-1)"),
+                       sub("Output", "Write VTU", "false"),
+                       stage(1, ("Name", "stretch"), ("Final load", "0.2")),
+                       stage(2, ("Name", "springback"), ("Kind", "release"),
+                             ("Prescribed displacements", "none"),
+                             ("Release supports",
+                              "point(0, 0, 0): ux uy uz; point(0.01, 0, 0): "
+                              "uy uz; point(0, 0.01, 0): uz"))),
+             exit=3,
+             messages=["stage 2 'springback' cannot begin: Process/Stage "
+                       "2/Release supports: at the nodes found the released "
+                       "sheet is free to move (rotation about"]),
     ]
 
 
