@@ -136,12 +136,19 @@ def run_and_resume(deepdraw, work, resumed_at):
     if "resumed at load %s" % resumed_at not in log:
         failures.append("the resumed run did not begin at load %s"
                         % resumed_at)
-    for table in sorted(p.name for p in (work / "full").glob("*.csv")):
-        same = comparable_table(work / "full" / table) == \
-            comparable_table(work / "resumed" / table)
+    return failures + same_tables(work / "full", work / "resumed")
+
+
+def same_tables(expected, actual, what="the uninterrupted run"):
+    """Every CSV table of the directory `expected` must be in `actual` with
+    the same cells (comparable_table); returns the failures."""
+    failures = []
+    for table in sorted(p.name for p in pathlib.Path(expected).glob("*.csv")):
+        same = comparable_table(pathlib.Path(expected) / table) == \
+            comparable_table(pathlib.Path(actual) / table)
         print("%s %s" % ("same" if same else "DIFFERENT", table))
         if not same:
-            failures.append(table + " differs from the uninterrupted run")
+            failures.append("%s differs from %s" % (table, what))
     return failures
 
 

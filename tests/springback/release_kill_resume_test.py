@@ -18,7 +18,7 @@ import time
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
 import script_test  # noqa: E402
-from script_test import comparable_table, run  # noqa: E402
+from script_test import run  # noqa: E402
 
 
 def last_load(path):
@@ -60,12 +60,7 @@ def main():
                "stopped", "--resume"], work, tail=300)
     if "resumed at load 1." not in log:
         failures.append("the resumed run did not begin inside the release")
-    for table in sorted(p.name for p in (work / "full").glob("*.csv")):
-        same = comparable_table(work / "full" / table) == \
-            comparable_table(work / "stopped" / table)
-        print("%s %s" % ("same" if same else "DIFFERENT", table))
-        if not same:
-            failures.append(table + " differs from the uninterrupted run")
+    failures += script_test.same_tables(work / "full", work / "stopped")
     script_test.finish(failures)
 
 
