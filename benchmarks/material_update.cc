@@ -1,9 +1,9 @@
-// Micro-benchmark of HillPlasticity::update (NUMISHEET'93 aluminium, with
+// Micro-benchmark of ElastoPlasticity::update (NUMISHEET'93 aluminium, with
 // and without Prager): microseconds per elastic and per plastic update.
 // Increments cycle through a table so the compiler cannot hoist the work.
 #include <chrono>
 #include <cstdio>
-#include <deepdraw/material/hill_plasticity.h>
+#include <deepdraw/material/elasto_plasticity.h>
 #include <vector>
 
 using namespace deepdraw::material;
@@ -11,7 +11,7 @@ using namespace deepdraw::material;
 namespace
 {
   double
-  time_updates(const HillPlasticity                             &material,
+  time_updates(const ElastoPlasticity                           &material,
                const MaterialPointState                         &old_state,
                const std::vector<dealii::SymmetricTensor<2, 3>> &increments,
                const unsigned int                                n,
@@ -49,7 +49,7 @@ main()
   {
     MaterialParameters parameters;
     parameters.prager_modulus = k;
-    const HillPlasticity material(parameters);
+    const ElastoPlasticity material(parameters);
 
     // A state on the yield surface after 2 % plastic straining.
     MaterialPointState            virgin, loaded;

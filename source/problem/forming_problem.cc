@@ -89,7 +89,7 @@ namespace deepdraw
                             profile_travels.end());
 
       material
-        = std::make_unique<material::HillPlasticity>(material_parameters);
+        = std::make_unique<material::ElastoPlasticity>(material_parameters);
       element = std::make_unique<fe::HexahedronElement>(element_parameters,
                                                         *material,
                                                         fe);

@@ -31,7 +31,7 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/tria.h>
 #include <deepdraw/fe/selective_reduced_quadrature.h>
-#include <deepdraw/material/hill_plasticity.h>
+#include <deepdraw/material/elasto_plasticity.h>
 #include <deepdraw/problem/history_interpolation.h>
 #include <deepdraw/problem/refinement_indicator.h>
 #include <deepdraw/problem/state_transfer.h>
@@ -289,7 +289,7 @@ namespace
   }
 
   void
-  check_history(const material::HillPlasticity &material)
+  check_history(const material::ElastoPlasticity &material)
   {
     Block block;
     GridGenerator::subdivided_hyper_rectangle(block.triangulation,
@@ -447,7 +447,7 @@ main(int argc, char *argv[])
   check_freed_hanging_vertices();
   check_column_maximum();
 
-  const material::HillPlasticity material{material::MaterialParameters()};
+  const material::ElastoPlasticity material{material::MaterialParameters()};
   check_history(material);
   return deepdraw_test::summary();
 }

@@ -41,7 +41,7 @@
 #include "test_utilities.h"
 
 #include <deal.II/base/mpi.h>
-#include <deepdraw/material/hill_plasticity.h>
+#include <deepdraw/material/elasto_plasticity.h>
 #include <deepdraw/problem/forming_problem.h>
 #include <iomanip>
 #include <sstream>
@@ -162,7 +162,7 @@ namespace
     material::MaterialParameters parameters;
     parameters.parse_parameters(prm);
     prm.leave_subsection();
-    const material::HillPlasticity material(parameters);
+    const material::ElastoPlasticity material(parameters);
 
     std::vector<double>          table(n_steps + 1, 0.);
     material::MaterialPointState state, next;

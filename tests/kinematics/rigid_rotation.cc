@@ -8,7 +8,7 @@
 #include <cmath>
 #include <deal.II/base/parameter_handler.h>
 #include <deepdraw/fe/quadrature_point_update.h>
-#include <deepdraw/material/hill_plasticity.h>
+#include <deepdraw/material/elasto_plasticity.h>
 #include <deepdraw/material/material_parameters.h>
 
 using namespace dealii;
@@ -44,7 +44,7 @@ namespace
               << std::endl;
     material::MaterialParameters parameters; // NUMISHEET'93 aluminium
     parameters.prager_modulus = 2000.;
-    const material::HillPlasticity material(parameters);
+    const material::ElastoPlasticity material(parameters);
 
     // Pre-stress: a plastic multiaxial stretch.
     fe::QuadraturePointHistory state, next;

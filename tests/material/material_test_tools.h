@@ -2,7 +2,7 @@
 // a small dense solver, and a uniaxial tension/compression driver in an
 // arbitrary direction of the sheet plane (mixed strain/stress control or
 // pure stress control), Newton on the strain increment with the tangent of
-// HillPlasticity.
+// ElastoPlasticity.
 #ifndef deepdraw_tests_material_test_tools_h
 #define deepdraw_tests_material_test_tools_h
 
@@ -10,14 +10,14 @@
 #include <cmath>
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
-#include <deepdraw/material/hill_plasticity.h>
+#include <deepdraw/material/elasto_plasticity.h>
 #include <stdexcept>
 #include <utility>
 
 namespace material_test
 {
   using namespace dealii;
-  using deepdraw::material::HillPlasticity;
+  using deepdraw::material::ElastoPlasticity;
   using deepdraw::material::MaterialParameters;
   using deepdraw::material::MaterialPointState;
 
@@ -153,7 +153,7 @@ namespace material_test
   class UniaxialDriver
   {
   public:
-    UniaxialDriver(const HillPlasticity &material, const double angle)
+    UniaxialDriver(const ElastoPlasticity &material, const double angle)
         : material(material)
         , Q(load_axes(angle))
         , R(kelvin_rotation(Q))
@@ -248,9 +248,9 @@ namespace material_test
       return false;
     }
 
-    const HillPlasticity &material;
-    const Tensor<2, 3>    Q;
-    const Matrix6         R;
+    const ElastoPlasticity &material;
+    const Tensor<2, 3>      Q;
+    const Matrix6           R;
   };
 
   inline MaterialParameters

@@ -5,7 +5,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <deepdraw/io/input_error.h>
-#include <deepdraw/material/hill_plasticity.h>
+#include <deepdraw/material/elasto_plasticity.h>
 #include <deepdraw/material/material_parameters.h>
 #include <string>
 #include <utility>
@@ -179,14 +179,14 @@ main()
     deepdraw_test::check_true("Rolling direction angle = 200 refused", refused);
   }
 
-  // Parameters set in code are validated by the HillPlasticity constructor.
+  // Parameters set in code are validated by the ElastoPlasticity constructor.
   {
     MaterialParameters parameters;
     parameters.hill_G = -0.2;
     std::string message;
     try
     {
-      deepdraw::material::HillPlasticity material(parameters);
+      deepdraw::material::ElastoPlasticity material(parameters);
     }
     catch (const deepdraw::InputError &e)
     {

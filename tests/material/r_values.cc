@@ -11,7 +11,7 @@
 #include "../test_utilities.h"
 #include "material_test_tools.h"
 
-#include <deepdraw/material/hill_plasticity.h>
+#include <deepdraw/material/elasto_plasticity.h>
 #include <map>
 
 using namespace material_test;
@@ -20,7 +20,7 @@ int
 main()
 {
   const MaterialParameters p;
-  const HillPlasticity     material(p);
+  const ElastoPlasticity   material(p);
   const double F = p.hill_F, G = p.hill_G, H = p.hill_H, N = p.hill_N;
   const std::map<double, double> formula
     = {{0., H / G}, {45., N / (F + G) - 0.5}, {90., H / F}};

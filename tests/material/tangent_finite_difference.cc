@@ -1,4 +1,4 @@
-// The consistent tangent of HillPlasticity::update equals a central finite
+// The consistent tangent of ElastoPlasticity::update equals a central finite
 // difference of the stress update (doc/theory_material.md: the global Newton's
 // quadratic convergence relies on it). Elastic, plastic, kinematic hardening,
 // perfect plasticity, several multiaxial and large increments.
@@ -10,7 +10,7 @@
 #include "../test_utilities.h"
 #include "material_test_tools.h"
 
-#include <deepdraw/material/hill_plasticity.h>
+#include <deepdraw/material/elasto_plasticity.h>
 
 using namespace material_test;
 
@@ -36,7 +36,7 @@ namespace
 
   // Returns max |T_fd - T| / max |T| and whether the step was plastic.
   double
-  tangent_error(const HillPlasticity        &material,
+  tangent_error(const ElastoPlasticity      &material,
                 const MaterialPointState    &old_state,
                 const SymmetricTensor<2, 3> &increment,
                 bool                        &plastic)
@@ -130,7 +130,7 @@ main()
 
   for (const auto &[material_name, parameters] : materials)
   {
-    const HillPlasticity material(parameters);
+    const ElastoPlasticity material(parameters);
     std::cout << material_name << std::endl;
 
     // Pre-deformed state: on the yield surface after a plastic step,
@@ -191,10 +191,10 @@ main()
   // A non-finite increment makes update() report failure (the caller cuts
   // the increment) instead of returning garbage.
   {
-    const HillPlasticity  material{MaterialParameters()};
-    MaterialPointState    old_state, new_state;
-    SymmetricTensor<4, 3> T;
-    bool                  plastic;
+    const ElastoPlasticity material{MaterialParameters()};
+    MaterialPointState     old_state, new_state;
+    SymmetricTensor<4, 3>  T;
+    bool                   plastic;
     deepdraw_test::check_true(
       "NaN increment: update returns false",
       !material.update(old_state,

@@ -30,7 +30,7 @@
 #include <deepdraw/io/csv_file.h>
 #include <deepdraw/io/output_parameters.h>
 #include <deepdraw/io/pvd_record.h>
-#include <deepdraw/material/hill_plasticity.h>
+#include <deepdraw/material/elasto_plasticity.h>
 #include <deepdraw/material/material_parameters.h>
 #include <deepdraw/problem/adaptivity_parameters.h>
 #include <deepdraw/problem/blank_geometry.h>
@@ -372,8 +372,8 @@ namespace deepdraw
       // All parameters, flattened (a checkpoint refuses another model).
       std::string parameter_listing;
 
-      std::unique_ptr<material::HillPlasticity> material;
-      std::unique_ptr<fe::HexahedronElement>    element;
+      std::unique_ptr<material::ElastoPlasticity> material;
+      std::unique_ptr<fe::HexahedronElement>      element;
 
       // Discretisation
       Triangulation<3>                                    triangulation;

@@ -1,10 +1,13 @@
-// Hill'48 elastoplasticity with Swift isotropic and Prager kinematic
-// hardening at a material point (doc/theory_material.md): fully implicit return
-// mapping and its exact algorithmic tangent. Theory: doc/theory_material.md.
-#ifndef deepdraw_material_hill_plasticity_h
-#define deepdraw_material_hill_plasticity_h
+// Elastoplasticity at a material point (doc/theory_material.md): isotropic
+// elasticity, the Hill'48 yield criterion, Swift isotropic and Prager
+// kinematic hardening; fully implicit return mapping and its exact
+// algorithmic tangent.
+#ifndef deepdraw_material_elasto_plasticity_h
+#define deepdraw_material_elasto_plasticity_h
 
 #include <deal.II/base/symmetric_tensor.h>
+#include <deepdraw/material/hardening_law.h>
+#include <deepdraw/material/hill48_criterion.h>
 #include <deepdraw/material/material_parameters.h>
 #include <deepdraw/material/material_point_state.h>
 
@@ -12,12 +15,12 @@ namespace deepdraw
 {
   namespace material
   {
-    class HillPlasticity
+    class ElastoPlasticity
     {
     public:
       // Validates the parameters (throws InputError) and diagonalises the
       // Hill tensor once.
-      explicit HillPlasticity(const MaterialParameters &parameters);
+      explicit ElastoPlasticity(const MaterialParameters &parameters);
 
       // Fully implicit return mapping (closest point projection) for the
       // strain increment given in the material frame (1 = rolling,
@@ -48,9 +51,8 @@ namespace deepdraw
       const dealii::SymmetricTensor<4, 3> &
       elasticity_tensor() const;
 
-      // M with sigma_bar^2 = xi : M : xi (full tensor contraction).
-      const dealii::SymmetricTensor<4, 3> &
-      hill_tensor() const;
+      const Hill48Criterion &
+      hill48_criterion() const;
 
       const MaterialParameters &
       get_parameters() const;
@@ -63,21 +65,20 @@ namespace deepdraw
       double lame_lambda;
 
       dealii::SymmetricTensor<4, 3> elasticity;
-      dealii::SymmetricTensor<4, 3> hill;
+      Hill48Criterion               hill48;
+      HardeningLaw                  hardening;
 
-      // Spectral form of M in the Kelvin/Mandel basis, without the
-      // hydrostatic mode (eigenvalue 0): two deviatoric modes of the normal
-      // block (eigenvalues normal_eigenvalues, unit eigenvectors
-      // normal_eigenvectors in (11, 22, 33)) and the shear modes 12, 13, 23
-      // with eigenvalues N, M, L.
-      double normal_eigenvalues[2];
-      double normal_eigenvectors[2][3];
-      double shear_eigenvalues[3];
-      double smallest_eigenvalue;
-
-      // Y and dY/d epbar with one pow().
-      void
-      swift(const double epbar, double &Y, double &dY) const;
+      // The plastic corrector, from the trial state xi_trial = sigma_trial -
+      // X_n outside the yield surface (sigma_bar_trial > Y_n). Same
+      // contract as update().
+      bool
+      return_mapping_hill48(const MaterialPointState            &old_state,
+                            const dealii::SymmetricTensor<2, 3> &xi_trial,
+                            const double                   sigma_bar_trial,
+                            const double                   Y_n,
+                            const double                   dY_n,
+                            MaterialPointState            &new_state,
+                            dealii::SymmetricTensor<4, 3> &tangent) const;
     };
   } // namespace material
 } // namespace deepdraw
