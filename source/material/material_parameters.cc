@@ -40,6 +40,100 @@ namespace deepdraw
                            + name(entry) + ": allowed values are " + allowed
                            + ".");
       }
+
+      std::string
+      table_to_string(const std::vector<std::pair<double, double>> &table)
+      {
+        std::string text;
+        for (const auto &[strain, stress] : table)
+          text += (text.empty() ? "" : ", ") + to_string(strain) + ":"
+                  + to_string(stress);
+        return text;
+      }
+
+      // "e1:Y1, e2:Y2, ..." -> pairs; the values are checked by validate().
+      std::vector<std::pair<double, double>>
+      parse_table(const std::string &text)
+      {
+        const std::string allowed
+          = "comma-separated pairs plastic strain:yield stress, e.g. "
+            "\"0:150, 0.1:230, 0.5:300\"";
+        std::vector<std::pair<double, double>> table;
+        std::istringstream                     entries(text);
+        std::string                            entry;
+        while (std::getline(entries, entry, ','))
+        {
+          const auto first = entry.find_first_not_of(" \t");
+          entry            = first == std::string::npos
+                               ? ""
+                               : entry.substr(first,
+                                   entry.find_last_not_of(" \t") - first + 1);
+          std::istringstream pair(entry);
+          double             strain, stress;
+          char               colon = 0;
+          std::string        rest;
+          if (!(pair >> strain >> colon >> stress) || colon != ':'
+              || (pair >> rest))
+            throw InputError("Invalid entry \"" + entry + "\" of "
+                             + name("Hardening table") + ": allowed values are "
+                             + allowed + ".");
+          table.emplace_back(strain, stress);
+        }
+        if (table.empty())
+          throw InputError("Empty " + name("Hardening table")
+                           + ": allowed values are " + allowed + ".");
+        return table;
+      }
+
+
+      void
+      validate_hardening(const MaterialParameters &p)
+      {
+        require(p.voce_A > 0. && p.voce_A <= 1e15,
+                "Voce A",
+                p.voce_A,
+                "0 < A <= 1e15 (MPa)");
+        require(p.voce_B >= 0. && p.voce_B < p.voce_A,
+                "Voce B",
+                p.voce_B,
+                "0 <= B < Voce A = " + to_string(p.voce_A)
+                  + " (MPa; the initial yield stress A - B must be "
+                    "positive, and B >= 0 keeps the law hardening)");
+        require(p.voce_C >= 0. && p.voce_C <= 1e6,
+                "Voce C",
+                p.voce_C,
+                "0 <= C <= 1e6");
+        const auto &table = p.hardening_table;
+        require(!table.empty() && table.size() <= 10000,
+                "Hardening table",
+                table.size(),
+                "1 to 10000 pairs");
+        require(table[0].first == 0.,
+                "Hardening table",
+                table[0].first,
+                "a first plastic strain of 0");
+        for (unsigned int k = 0; k < table.size(); ++k)
+        {
+          const auto [strain, stress] = table[k];
+          require(stress > 0. && stress <= 1e15,
+                  "Hardening table",
+                  stress,
+                  "yield stresses 0 < Y <= 1e15 (MPa)");
+          if (k == 0)
+            continue;
+          require(strain > table[k - 1].first && strain <= 100.,
+                  "Hardening table",
+                  strain,
+                  "strictly increasing plastic strains up to 100 (after "
+                    + to_string(table[k - 1].first) + ")");
+          require(stress >= table[k - 1].second,
+                  "Hardening table",
+                  stress,
+                  "non-decreasing yield stresses (after "
+                    + to_string(table[k - 1].second)
+                    + " MPa; softening is not supported)");
+        }
+      }
     } // namespace
 
 
@@ -80,6 +174,13 @@ namespace deepdraw
                             + " (plane " + plane[i]
                             + "), dimensionless (0 < value <= 100). Von "
                               "Mises: 1.5.");
+      prm.declare_entry("Hardening law",
+                        "Swift",
+                        dealii::Patterns::Selection("Swift|Voce|tabulated"),
+                        "Isotropic hardening Y(epbar), the yield stress of "
+                        "uniaxial tension in the rolling direction: Swift "
+                        "(Swift coefficient/prestrain/exponent), Voce (Voce "
+                        "A/B/C) or tabulated (Hardening table).");
       prm.declare_entry("Swift coefficient",
                         to_string(d.swift_coefficient),
                         Double(0., inf),
@@ -97,6 +198,28 @@ namespace deepdraw
                         Double(0., 1.),
                         "n of the Swift law, dimensionless (0 <= n < 1; 0 = "
                         "perfectly plastic).");
+      prm.declare_entry("Voce A",
+                        to_string(d.voce_A),
+                        Double(),
+                        "A of the Voce law Y = A - B exp(-C epbar), the "
+                        "saturation stress, in MPa (0 < A <= 1e15).");
+      prm.declare_entry("Voce B",
+                        to_string(d.voce_B),
+                        Double(),
+                        "B of the Voce law, in MPa (0 <= B < A: the initial "
+                        "yield stress A - B is positive).");
+      prm.declare_entry("Voce C",
+                        to_string(d.voce_C),
+                        Double(),
+                        "C of the Voce law, dimensionless (0 <= C <= 1e6).");
+      prm.declare_entry(
+        "Hardening table",
+        table_to_string(d.hardening_table),
+        dealii::Patterns::Anything(),
+        "Tabulated Y(epbar): comma-separated pairs epbar:Y (Y in MPa), "
+        "piecewise linear, the last segment's slope continued beyond the last "
+        "point. The first strain is 0, the strains increase strictly, the "
+        "stresses are positive and do not decrease (at most 10000 pairs).");
       prm.declare_entry("Prager modulus",
                         to_string(d.prager_modulus),
                         Double(0., inf),
@@ -128,6 +251,14 @@ namespace deepdraw
       swift_coefficient       = prm.get_double("Swift coefficient");
       swift_prestrain         = prm.get_double("Swift prestrain");
       swift_exponent          = prm.get_double("Swift exponent");
+      const std::string law   = prm.get("Hardening law");
+      hardening_law           = law == "Swift"  ? HardeningLawType::swift
+                                : law == "Voce" ? HardeningLawType::voce
+                                                : HardeningLawType::tabulated;
+      voce_A                  = prm.get_double("Voce A");
+      voce_B                  = prm.get_double("Voce B");
+      voce_C                  = prm.get_double("Voce C");
+      hardening_table         = parse_table(prm.get("Hardening table"));
       prager_modulus          = prm.get_double("Prager modulus");
       rolling_direction_angle = prm.get_double("Rolling direction angle");
       validate();
@@ -185,6 +316,7 @@ namespace deepdraw
               "Swift exponent",
               swift_exponent,
               "0 <= n < 1");
+      validate_hardening(*this);
       require(prager_modulus >= 0. && prager_modulus <= 1e7,
               "Prager modulus",
               prager_modulus,

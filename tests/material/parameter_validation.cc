@@ -7,6 +7,8 @@
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/material/elasto_plasticity.h>
 #include <deepdraw/material/material_parameters.h>
+#include <iterator>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -61,8 +63,13 @@ main()
                                parameters.swift_exponent,
                                0.3593,
                                0.);
+    deepdraw_test::check_true("Swift is the default hardening law",
+                              parameters.hardening_law
+                                == deepdraw::material::HardeningLawType::swift);
+    deepdraw_test::check_true("default table parsed back",
+                              parameters.hardening_table == d.hardening_table);
   }
-  // All thirteen entries are read.
+  // All entries are read.
   {
     MaterialParameters parameters;
     const std::string  body
@@ -71,25 +78,55 @@ main()
         "set Hill L = 1.1\nset Hill M = 1.2\nset Hill N = 1.3\n"
         "set Swift coefficient = 500\nset Swift prestrain = 0.02\n"
         "set Swift exponent = 0.25\nset Prager modulus = 1000\n"
-        "set Rolling direction angle = 30";
+        "set Rolling direction angle = 30\nset Hardening law = Voce\n"
+        "set Voce A = 300\nset Voce B = 120\nset Voce C = 9.5\n"
+        "set Hardening table = 0:120, 0.05 : 180,0.4:260";
     deepdraw_test::check_true("custom values parse",
                               parse(body, parameters).empty());
-    const double read[] = {parameters.youngs_modulus,
-                           parameters.poissons_ratio,
-                           parameters.hill_F,
-                           parameters.hill_G,
-                           parameters.hill_H,
-                           parameters.hill_L,
-                           parameters.hill_M,
-                           parameters.hill_N,
-                           parameters.swift_coefficient,
-                           parameters.swift_prestrain,
-                           parameters.swift_exponent,
-                           parameters.prager_modulus,
-                           parameters.rolling_direction_angle};
-    const double expected[]
-      = {210000, 0.3, 0.1, 0.2, 0.3, 1.1, 1.2, 1.3, 500, 0.02, 0.25, 1000, 30};
-    for (unsigned int i = 0; i < 13; ++i)
+    deepdraw_test::check_true("Hardening law = Voce read",
+                              parameters.hardening_law
+                                == deepdraw::material::HardeningLawType::voce);
+    deepdraw_test::check_true("three table pairs read",
+                              parameters.hardening_table.size() == 3);
+    const double read[]     = {parameters.youngs_modulus,
+                               parameters.poissons_ratio,
+                               parameters.hill_F,
+                               parameters.hill_G,
+                               parameters.hill_H,
+                               parameters.hill_L,
+                               parameters.hill_M,
+                               parameters.hill_N,
+                               parameters.swift_coefficient,
+                               parameters.swift_prestrain,
+                               parameters.swift_exponent,
+                               parameters.prager_modulus,
+                               parameters.rolling_direction_angle,
+                               parameters.voce_A,
+                               parameters.voce_B,
+                               parameters.voce_C,
+                               parameters.hardening_table[1].first,
+                               parameters.hardening_table[1].second,
+                               parameters.hardening_table[2].second};
+    const double expected[] = {210000,
+                               0.3,
+                               0.1,
+                               0.2,
+                               0.3,
+                               1.1,
+                               1.2,
+                               1.3,
+                               500,
+                               0.02,
+                               0.25,
+                               1000,
+                               30,
+                               300,
+                               120,
+                               9.5,
+                               0.05,
+                               180,
+                               260};
+    for (unsigned int i = 0; i < std::size(expected); ++i)
       deepdraw_test::check_close("entry " + std::to_string(i),
                                  read[i],
                                  expected[i],
@@ -108,7 +145,22 @@ main()
        {"set Hill F = 0\nset Hill G = 0", "Material/Hill F"},
        {"set Hill L = 0", "Material/Hill L"},
        {"set Hill M = 0", "Material/Hill M"},
-       {"set Hill N = 0", "Material/Hill N"}};
+       {"set Hill N = 0", "Material/Hill N"},
+       {"set Voce A = 0", "Material/Voce A"},
+       {"set Voce B = 500", "Material/Voce B"}, // >= A: Y(0) <= 0
+       {"set Voce B = -1", "Material/Voce B"},  // softening
+       {"set Voce C = -2", "Material/Voce C"},
+       {"set Hardening table = 0:100, 0.1", "Material/Hardening table"},
+       {"set Hardening table = 0:100, 0.1:abc", "Material/Hardening table"},
+       {"set Hardening table = 0.01:100, 0.1:120", "Material/Hardening table"},
+       {"set Hardening table = 0:100, 0.1:120, 0.1:130",
+        "Material/Hardening table"},
+       {"set Hardening table = 0:100, 0.2:120, 0.1:130",
+        "Material/Hardening table"},
+       {"set Hardening table = 0:100, 0.1:90", "Material/Hardening table"},
+       {"set Hardening table = 0:-5", "Material/Hardening table"},
+       {"set Hardening table = 0:100, 0.1:inf", "Material/Hardening table"},
+       {"set Hardening table = ", "Material/Hardening table"}};
   for (const auto &[body, name] : bad)
   {
     MaterialParameters parameters;
@@ -179,7 +231,25 @@ main()
     deepdraw_test::check_true("Rolling direction angle = 200 refused", refused);
   }
 
-  // Parameters set in code are validated by the ElastoPlasticity constructor.
+  // Parameters set in code are validated by the ElastoPlasticity constructor,
+  // NaN included (a prm cannot give one: the Pattern refuses it).
+  {
+    MaterialParameters parameters;
+    parameters.voce_A = std::numeric_limits<double>::quiet_NaN();
+    std::string message;
+    try
+    {
+      deepdraw::material::ElastoPlasticity material(parameters);
+    }
+    catch (const deepdraw::InputError &e)
+    {
+      message = e.what();
+    }
+    std::cout << "  [constructor, Voce A = NaN] -> " << message << std::endl;
+    deepdraw_test::check_true("constructor throws naming Material/Voce A",
+                              message.find("Material/Voce A")
+                                != std::string::npos);
+  }
   {
     MaterialParameters parameters;
     parameters.hill_G = -0.2;

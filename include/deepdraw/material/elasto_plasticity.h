@@ -1,7 +1,7 @@
 // Elastoplasticity at a material point (doc/theory_material.md): isotropic
-// elasticity, the Hill'48 yield criterion, Swift isotropic and Prager
-// kinematic hardening; fully implicit return mapping and its exact
-// algorithmic tangent.
+// elasticity, the Hill'48 yield criterion, an isotropic hardening law
+// (Swift, Voce or tabulated) and Prager kinematic hardening; fully implicit
+// return mapping and its exact algorithmic tangent.
 #ifndef deepdraw_material_elasto_plasticity_h
 #define deepdraw_material_elasto_plasticity_h
 
@@ -40,7 +40,7 @@ namespace deepdraw
       double
       equivalent_stress(const dealii::SymmetricTensor<2, 3> &xi) const;
 
-      // Swift: Y = C (eps0 + epbar)^n.
+      // Y(epbar) of the hardening law.
       double
       yield_stress(const double equivalent_plastic_strain) const;
 
