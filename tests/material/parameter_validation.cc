@@ -40,6 +40,32 @@ namespace
     prm.leave_subsection();
     return "";
   }
+
+  // C' and C'' without their normal coefficients: S', S'' have no normal
+  // part, so every normal deviator has sigma_bar = 0.
+  std::string
+  zero_normal_coefficients()
+  {
+    std::string body;
+    for (const char *prime : {"'", "''"})
+      for (const char *index : {"12", "13", "21", "23", "31", "32"})
+        body += std::string("set Yld2004 c") + prime + index + " = 0\n";
+    return body;
+  }
+
+  // c12 = -c21 = c32 - c31 = 1 in both transformations: C' s = C'' s =
+  // (1, 1, 1) for s = (1, -1, 0), so phi(s) = 0 although no coefficient of
+  // S_xx, S_yy is zero.
+  std::string
+  degenerate_normal_coefficients()
+  {
+    std::string body;
+    for (const char *prime : {"'", "''"})
+      body += std::string("set Yld2004 c") + prime + "12 = 1\n"
+              + "set Yld2004 c" + prime + "21 = -1\n" + "set Yld2004 c" + prime
+              + "31 = 0\n" + "set Yld2004 c" + prime + "32 = 1\n";
+    return body;
+  }
 } // namespace
 
 int
@@ -68,6 +94,14 @@ main()
                                 == deepdraw::material::HardeningLawType::swift);
     deepdraw_test::check_true("default table parsed back",
                               parameters.hardening_table == d.hardening_table);
+    deepdraw_test::check_true("Hill48 is the default criterion",
+                              parameters.yield_criterion
+                                == deepdraw::material::YieldCriterion::hill48);
+    deepdraw_test::check_true("Yld2004 coefficients default to 1, a = 8",
+                              parameters.yld2004_c1 == d.yld2004_c1
+                                && parameters.yld2004_c2 == d.yld2004_c2
+                                && d.yld2004_c2[4] == 1.
+                                && parameters.yld2004_exponent == 8.);
   }
   // All entries are read.
   {
@@ -80,7 +114,10 @@ main()
         "set Swift exponent = 0.25\nset Prager modulus = 1000\n"
         "set Rolling direction angle = 30\nset Hardening law = Voce\n"
         "set Voce A = 300\nset Voce B = 120\nset Voce C = 9.5\n"
-        "set Hardening table = 0:120, 0.05 : 180,0.4:260";
+        "set Hardening table = 0:120, 0.05 : 180,0.4:260\n"
+        "set Yield criterion = Yld2004-18p\nset Yld2004 exponent = 6\n"
+        "set Yld2004 c'13 = 0.9\nset Yld2004 c''66 = 1.4\n"
+        "set Yld2004 c'44 = 1.05";
     deepdraw_test::check_true("custom values parse",
                               parse(body, parameters).empty());
     deepdraw_test::check_true("Hardening law = Voce read",
@@ -88,44 +125,37 @@ main()
                                 == deepdraw::material::HardeningLawType::voce);
     deepdraw_test::check_true("three table pairs read",
                               parameters.hardening_table.size() == 3);
-    const double read[]     = {parameters.youngs_modulus,
-                               parameters.poissons_ratio,
-                               parameters.hill_F,
-                               parameters.hill_G,
-                               parameters.hill_H,
-                               parameters.hill_L,
-                               parameters.hill_M,
-                               parameters.hill_N,
-                               parameters.swift_coefficient,
-                               parameters.swift_prestrain,
-                               parameters.swift_exponent,
-                               parameters.prager_modulus,
-                               parameters.rolling_direction_angle,
-                               parameters.voce_A,
-                               parameters.voce_B,
-                               parameters.voce_C,
-                               parameters.hardening_table[1].first,
-                               parameters.hardening_table[1].second,
-                               parameters.hardening_table[2].second};
-    const double expected[] = {210000,
-                               0.3,
-                               0.1,
-                               0.2,
-                               0.3,
-                               1.1,
-                               1.2,
-                               1.3,
-                               500,
-                               0.02,
-                               0.25,
-                               1000,
-                               30,
-                               300,
-                               120,
-                               9.5,
-                               0.05,
-                               180,
-                               260};
+    deepdraw_test::check_true(
+      "Yield criterion = Yld2004-18p read",
+      parameters.yield_criterion
+        == deepdraw::material::YieldCriterion::yld2004_18p);
+    const double read[] = {parameters.youngs_modulus,
+                           parameters.poissons_ratio,
+                           parameters.hill_F,
+                           parameters.hill_G,
+                           parameters.hill_H,
+                           parameters.hill_L,
+                           parameters.hill_M,
+                           parameters.hill_N,
+                           parameters.swift_coefficient,
+                           parameters.swift_prestrain,
+                           parameters.swift_exponent,
+                           parameters.prager_modulus,
+                           parameters.rolling_direction_angle,
+                           parameters.voce_A,
+                           parameters.voce_B,
+                           parameters.voce_C,
+                           parameters.hardening_table[1].first,
+                           parameters.hardening_table[1].second,
+                           parameters.hardening_table[2].second,
+                           parameters.yld2004_exponent,
+                           parameters.yld2004_c1[1],
+                           parameters.yld2004_c2[8],
+                           parameters.yld2004_c1[6],
+                           parameters.yld2004_c1[0]};
+    const double expected[]
+      = {210000, 0.3, 0.1, 0.2, 0.3,  1.1, 1.2, 1.3, 500, 0.02, 0.25, 1000,
+         30,     300, 120, 9.5, 0.05, 180, 260, 6,   0.9, 1.4,  1.05, 1};
     for (unsigned int i = 0; i < std::size(expected); ++i)
       deepdraw_test::check_close("entry " + std::to_string(i),
                                  read[i],
@@ -160,7 +190,15 @@ main()
        {"set Hardening table = 0:100, 0.1:90", "Material/Hardening table"},
        {"set Hardening table = 0:-5", "Material/Hardening table"},
        {"set Hardening table = 0:100, 0.1:inf", "Material/Hardening table"},
-       {"set Hardening table = ", "Material/Hardening table"}};
+       {"set Hardening table = ", "Material/Hardening table"},
+       {"set Yld2004 exponent = 1.5", "Material/Yld2004 exponent"},
+       {"set Yld2004 exponent = 60", "Material/Yld2004 exponent"},
+       {"set Yld2004 c'12 = 150", "Material/Yld2004 c'12"},
+       {"set Yld2004 c''55 = -101", "Material/Yld2004 c''55"},
+       // Degenerate sets: a deviator with zero equivalent stress.
+       {"set Yld2004 c'66 = 0\nset Yld2004 c''66 = 0", "Material/Yld2004 c'66"},
+       {zero_normal_coefficients(), "Material/Yld2004 c'12"},
+       {degenerate_normal_coefficients(), "Material/Yld2004 c'12"}};
   for (const auto &[body, name] : bad)
   {
     MaterialParameters parameters;
@@ -248,6 +286,22 @@ main()
     std::cout << "  [constructor, Voce A = NaN] -> " << message << std::endl;
     deepdraw_test::check_true("constructor throws naming Material/Voce A",
                               message.find("Material/Voce A")
+                                != std::string::npos);
+    parameters               = MaterialParameters();
+    parameters.yld2004_c2[3] = std::numeric_limits<double>::infinity();
+    message.clear();
+    try
+    {
+      deepdraw::material::ElastoPlasticity material(parameters);
+    }
+    catch (const deepdraw::InputError &e)
+    {
+      message = e.what();
+    }
+    std::cout << "  [constructor, c''23 = inf] -> " << message << std::endl;
+    deepdraw_test::check_true("constructor throws naming Material/Yld2004 "
+                              "c''23",
+                              message.find("Material/Yld2004 c''23")
                                 != std::string::npos);
   }
   {

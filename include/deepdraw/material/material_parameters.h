@@ -1,10 +1,12 @@
 // Parameters of the sheet material (doc/theory_material.md): isotropic
-// elasticity, Hill'48 anisotropy, the isotropic hardening law (Swift, Voce
-// or a table) and Prager kinematic hardening. Defaults: NUMISHEET'93
-// aluminium (doc/results.md) with Swift. Units: MPa.
+// elasticity, the yield criterion (Hill'48 or Barlat's Yld2004-18p), the
+// isotropic hardening law (Swift, Voce or a table) and Prager kinematic
+// hardening. Defaults: NUMISHEET'93 aluminium (doc/results.md), Hill'48 and
+// Swift. Units: MPa.
 #ifndef deepdraw_material_material_parameters_h
 #define deepdraw_material_material_parameters_h
 
+#include <array>
 #include <deal.II/base/tensor.h>
 #include <utility>
 #include <vector>
@@ -18,6 +20,12 @@ namespace deepdraw
 {
   namespace material
   {
+    enum class YieldCriterion
+    {
+      hill48,
+      yld2004_18p
+    };
+
     enum class HardeningLawType
     {
       swift,
@@ -35,6 +43,16 @@ namespace deepdraw
       // 3/2.
       double hill_F = 0.5932, hill_G = 0.5848, hill_H = 0.4152;
       double hill_L = 1.272, hill_M = 1.272, hill_N = 1.272;
+
+      YieldCriterion yield_criterion = YieldCriterion::hill48;
+
+      // Yld2004-18p (Barlat et al. 2005), in the paper's order c12 c13 c21
+      // c23 c31 c32 c44 c55 c66 with 4 = 23 (yz), 5 = 31 (zx), 6 = 12 (xy):
+      // C' (yld2004_c1) and C'' (yld2004_c2), and the exponent a. All 1:
+      // Hosford's isotropic criterion (von Mises for a = 2).
+      std::array<double, 9> yld2004_c1 = {{1., 1., 1., 1., 1., 1., 1., 1., 1.}};
+      std::array<double, 9> yld2004_c2 = {{1., 1., 1., 1., 1., 1., 1., 1., 1.}};
+      double                yld2004_exponent = 8.;
 
       HardeningLawType hardening_law = HardeningLawType::swift;
 
@@ -85,7 +103,8 @@ namespace deepdraw
 
       // Checks what a Pattern cannot (E > 0, -1 < nu < 1/2, C > 0, eps0 > 0,
       // 0 <= n < 1, F, G, H >= 0 with pairwise sums > 0, L, M, N > 0, the
-      // Voce constants and the table). Throws
+      // Yld2004-18p coefficients finite with a bounded yield surface, 2 <= a
+      // <= 50, the Voce constants and the table). Throws
       // deepdraw::InputError naming the parameter ("Material/Hill G") and
       // the allowed values.
       void
