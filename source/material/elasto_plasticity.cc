@@ -26,6 +26,7 @@ namespace deepdraw
     ElastoPlasticity::ElastoPlasticity(const MaterialParameters &parameters)
         : parameters(validated(parameters))
         , hill48(parameters)
+        , yld2004(parameters)
         , hardening(parameters)
     {
       const double E  = parameters.youngs_modulus;
@@ -46,7 +47,9 @@ namespace deepdraw
     double
     ElastoPlasticity::equivalent_stress(const SymmetricTensor<2, 3> &xi) const
     {
-      return hill48.equivalent_stress(xi);
+      return parameters.yield_criterion == YieldCriterion::hill48
+               ? hill48.equivalent_stress(xi)
+               : yld2004.equivalent_stress(xi);
     }
 
 
@@ -76,6 +79,13 @@ namespace deepdraw
     ElastoPlasticity::hill48_criterion() const
     {
       return hill48;
+    }
+
+
+    const Yld2004Criterion &
+    ElastoPlasticity::yld2004_criterion() const
+    {
+      return yld2004;
     }
 
 
@@ -122,13 +132,18 @@ namespace deepdraw
         return true;
       }
       plastic = true;
-      return return_mapping_hill48(old_state,
-                                   xi_trial,
-                                   sigma_bar_trial,
-                                   Y_n,
-                                   dY_n,
-                                   new_state,
-                                   consistent_tangent);
+      if (parameters.yield_criterion == YieldCriterion::hill48)
+        return return_mapping_hill48(old_state,
+                                     xi_trial,
+                                     sigma_bar_trial,
+                                     Y_n,
+                                     dY_n,
+                                     new_state,
+                                     consistent_tangent);
+      return return_mapping_general(old_state,
+                                    xi_trial,
+                                    new_state,
+                                    consistent_tangent);
     }
   } // namespace material
 } // namespace deepdraw

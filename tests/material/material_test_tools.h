@@ -1,8 +1,9 @@
 // Helpers shared by the material-point tests: Kelvin (Mandel) 6-vectors,
-// a small dense solver, and a uniaxial tension/compression driver in an
+// a small dense solver, a uniaxial tension/compression driver in an
 // arbitrary direction of the sheet plane (mixed strain/stress control or
 // pure stress control), Newton on the strain increment with the tangent of
-// ElastoPlasticity.
+// ElastoPlasticity, the finite-difference check of that tangent, and the
+// published Yld2004-18p coefficients of AA2090-T3.
 #ifndef deepdraw_tests_material_test_tools_h
 #define deepdraw_tests_material_test_tools_h
 
@@ -20,6 +21,7 @@ namespace material_test
   using deepdraw::material::ElastoPlasticity;
   using deepdraw::material::MaterialParameters;
   using deepdraw::material::MaterialPointState;
+  using deepdraw::material::YieldCriterion;
 
   using Vector6 = std::array<double, 6>;
   using Matrix6 = std::array<Vector6, 6>;
@@ -259,6 +261,110 @@ namespace material_test
     MaterialParameters p;
     p.hill_F = p.hill_G = p.hill_H = 0.5;
     p.hill_L = p.hill_M = p.hill_N = 1.5;
+    return p;
+  }
+
+  inline SymmetricTensor<2, 3>
+  strain(const double e11,
+         const double e22,
+         const double e33,
+         const double e12,
+         const double e13,
+         const double e23)
+  {
+    SymmetricTensor<2, 3> e;
+    e[0][0] = e11;
+    e[1][1] = e22;
+    e[2][2] = e33;
+    e[0][1] = e12;
+    e[0][2] = e13;
+    e[1][2] = e23;
+    return e;
+  }
+
+  // max |T_fd - T| / max |T| of the consistent tangent T of one update
+  // against central differences of that update with step
+  // h = 1e-5 max(|d_eps|, 1e-4); plastic tells whether the step was plastic.
+  // 1e300 if an update fails or a perturbed step changes plastic.
+  inline double
+  tangent_error(const ElastoPlasticity      &material,
+                const MaterialPointState    &old_state,
+                const SymmetricTensor<2, 3> &increment,
+                bool                        &plastic)
+  {
+    MaterialPointState    new_state;
+    SymmetricTensor<4, 3> T, T_dummy;
+    if (!material.update(old_state, increment, new_state, T, plastic))
+      return 1e300;
+    const double h         = 1e-5 * std::max(increment.norm(), 1e-4);
+    double       max_error = 0., max_entry = 0.;
+    for (unsigned int J = 0; J < 6; ++J)
+    {
+      // Raw entry J: both (k,l) and (l,k) move by h, so d sigma = 2 T h
+      // for a shear column.
+      SymmetricTensor<2, 3> perturbation;
+      perturbation.access_raw_entry(J) = h;
+      MaterialPointState plus, minus;
+      bool               p_plus, p_minus;
+      if (!material
+             .update(old_state, increment + perturbation, plus, T_dummy, p_plus)
+          || !material.update(old_state,
+                              increment - perturbation,
+                              minus,
+                              T_dummy,
+                              p_minus)
+          || p_plus != plastic || p_minus != plastic)
+        return 1e300;
+      for (unsigned int I = 0; I < 6; ++I)
+      {
+        const double fd
+          = (plus.stress.access_raw_entry(I) - minus.stress.access_raw_entry(I))
+            / (2. * h);
+        const double exact = T.access_raw_entry(6 * I + J) * (J < 3 ? 1. : 2.);
+        max_error          = std::max(max_error, std::abs(fd - exact));
+        max_entry          = std::max(max_entry, std::abs(exact));
+      }
+    }
+    return max_error / max_entry;
+  }
+
+  // Plastic strain eps - C^-1 : sigma of the driver, in the load frame.
+  inline SymmetricTensor<2, 3>
+  plastic_strain(const UniaxialDriver &driver, const MaterialParameters &p)
+  {
+    const double                E = p.youngs_modulus, nu = p.poissons_ratio;
+    const SymmetricTensor<2, 3> s = driver.stress();
+    return driver.strain()
+           - ((1. + nu) * s - nu * trace(s) * unit_symmetric_tensor<3>()) / E;
+  }
+
+  // Yld2004-18p of AA2090-T3, a = 8 (Barlat et al., Int. J. Plasticity 21
+  // (2005) 1009, as quoted in the TFEL/MFront documentation), in the
+  // paper's order c12 c13 c21 c23 c31 c32 c44 c55 c66.
+  inline MaterialParameters
+  aa2090_t3_parameters()
+  {
+    MaterialParameters p;
+    p.yield_criterion  = YieldCriterion::yld2004_18p;
+    p.yld2004_c1       = {{-0.069888,
+                           0.936408,
+                           0.079143,
+                           1.00306,
+                           0.524741,
+                           1.36318,
+                           1.02377,
+                           1.06906,
+                           0.954322}};
+    p.yld2004_c2       = {{0.981171,
+                           0.476741,
+                           0.575316,
+                           0.866827,
+                           1.14501,
+                           -0.079294,
+                           1.05166,
+                           1.1471,
+                           1.40462}};
+    p.yld2004_exponent = 8.;
     return p;
   }
 

@@ -1,7 +1,7 @@
 // Elastoplasticity at a material point (doc/theory_material.md): isotropic
-// elasticity, the Hill'48 yield criterion, an isotropic hardening law
-// (Swift, Voce or tabulated) and Prager kinematic hardening; fully implicit
-// return mapping and its exact algorithmic tangent.
+// elasticity, a yield criterion (Hill'48 or Yld2004-18p), an isotropic
+// hardening law (Swift, Voce or tabulated) and Prager kinematic hardening;
+// fully implicit return mapping and its exact algorithmic tangent.
 #ifndef deepdraw_material_elasto_plasticity_h
 #define deepdraw_material_elasto_plasticity_h
 
@@ -10,6 +10,7 @@
 #include <deepdraw/material/hill48_criterion.h>
 #include <deepdraw/material/material_parameters.h>
 #include <deepdraw/material/material_point_state.h>
+#include <deepdraw/material/yld2004_criterion.h>
 
 namespace deepdraw
 {
@@ -18,8 +19,9 @@ namespace deepdraw
     class ElastoPlasticity
     {
     public:
-      // Validates the parameters (throws InputError) and diagonalises the
-      // Hill tensor once.
+      // Validates the parameters (throws InputError) and prepares the
+      // criterion once (Hill'48: the spectral form of its tensor;
+      // Yld2004-18p: the transformations and the normalisation).
       explicit ElastoPlasticity(const MaterialParameters &parameters);
 
       // Fully implicit return mapping (closest point projection) for the
@@ -36,7 +38,8 @@ namespace deepdraw
              dealii::SymmetricTensor<4, 3>       &consistent_tangent,
              bool                                &plastic) const;
 
-      // Hill'48 equivalent stress of xi = sigma - X.
+      // Equivalent stress of xi = sigma - X under the selected criterion
+      // (= the stress of uniaxial tension in the rolling direction).
       double
       equivalent_stress(const dealii::SymmetricTensor<2, 3> &xi) const;
 
@@ -51,8 +54,12 @@ namespace deepdraw
       const dealii::SymmetricTensor<4, 3> &
       elasticity_tensor() const;
 
+      // The two criteria (only the selected one is used by update()).
       const Hill48Criterion &
       hill48_criterion() const;
+
+      const Yld2004Criterion &
+      yld2004_criterion() const;
 
       const MaterialParameters &
       get_parameters() const;
@@ -66,11 +73,12 @@ namespace deepdraw
 
       dealii::SymmetricTensor<4, 3> elasticity;
       Hill48Criterion               hill48;
+      Yld2004Criterion              yld2004;
       HardeningLaw                  hardening;
 
-      // The plastic corrector, from the trial state xi_trial = sigma_trial -
-      // X_n outside the yield surface (sigma_bar_trial > Y_n). Same
-      // contract as update().
+      // The plastic corrector of each criterion, from the trial state
+      // xi_trial = sigma_trial - X_n outside the yield surface
+      // (sigma_bar_trial > Y_n). Same contract as update().
       bool
       return_mapping_hill48(const MaterialPointState            &old_state,
                             const dealii::SymmetricTensor<2, 3> &xi_trial,
@@ -79,6 +87,12 @@ namespace deepdraw
                             const double                   dY_n,
                             MaterialPointState            &new_state,
                             dealii::SymmetricTensor<4, 3> &tangent) const;
+
+      bool
+      return_mapping_general(const MaterialPointState            &old_state,
+                             const dealii::SymmetricTensor<2, 3> &xi_trial,
+                             MaterialPointState                  &new_state,
+                             dealii::SymmetricTensor<4, 3> &tangent) const;
     };
   } // namespace material
 } // namespace deepdraw
