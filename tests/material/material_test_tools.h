@@ -7,13 +7,18 @@
 #ifndef deepdraw_tests_material_test_tools_h
 #define deepdraw_tests_material_test_tools_h
 
+#include "../test_utilities.h"
+
 #include <array>
 #include <cmath>
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 #include <deepdraw/material/elasto_plasticity.h>
+#include <sstream>
 #include <stdexcept>
+#include <string>
 #include <utility>
+#include <vector>
 
 namespace material_test
 {
@@ -328,6 +333,69 @@ namespace material_test
     return max_error / max_entry;
   }
 
+  // The tangent of `material` against finite differences (tangent_error,
+  // tolerance 1e-6 of max |T|): every increment from the virgin state and
+  // from a state pre-deformed plastically (with back stress if k > 0), all
+  // plastic; then elastic loading from the virgin state and elastic
+  // unloading from the pre-deformed one.
+  inline void
+  check_tangents(
+    const ElastoPlasticity &material,
+    const std::vector<std::pair<std::string, SymmetricTensor<2, 3>>>
+      &increments)
+  {
+    MaterialPointState    virgin, predeformed;
+    SymmetricTensor<4, 3> T;
+    bool                  plastic = false;
+    material.update(virgin,
+                    strain(8e-3, -2e-3, -5e-3, 3e-3, 1e-3, -2e-3),
+                    predeformed,
+                    T,
+                    plastic);
+    deepdraw_test::check_true("  pre-deformation is plastic", plastic);
+    const auto check = [&](const std::string           &name,
+                           const MaterialPointState    &old_state,
+                           const SymmetricTensor<2, 3> &increment,
+                           const bool                   expect_plastic)
+    {
+      const double error
+        = tangent_error(material, old_state, increment, plastic);
+      deepdraw_test::check_true(
+        "  " + name + (expect_plastic ? ": plastic step" : ": elastic step"),
+        plastic == expect_plastic);
+      deepdraw_test::check_close("  " + name + ": relative tangent error",
+                                 error,
+                                 0.,
+                                 1e-6);
+    };
+    for (const auto &[name, increment] : increments)
+    {
+      check(name + ", virgin", virgin, increment, true);
+      check(name + ", pre-deformed", predeformed, increment, true);
+    }
+    const SymmetricTensor<2, 3> small
+      = strain(1e-4, -0.5e-4, 0.2e-4, 0.8e-4, 0.1e-4, -0.3e-4);
+    check("elastic loading", virgin, small, false);
+    check("elastic unloading", predeformed, -0.5 * small, false);
+  }
+
+  // A non-finite increment makes update() report failure (the caller cuts
+  // the increment) instead of returning garbage.
+  inline void
+  check_nan_increment_fails(const ElastoPlasticity &material)
+  {
+    MaterialPointState    old_state, new_state;
+    SymmetricTensor<4, 3> T;
+    bool                  plastic;
+    deepdraw_test::check_true(
+      "NaN increment: update returns false",
+      !material.update(old_state,
+                       strain(std::nan(""), 0., 0., 0., 0., 0.),
+                       new_state,
+                       T,
+                       plastic));
+  }
+
   // Plastic strain eps - C^-1 : sigma of the driver, in the load frame.
   inline SymmetricTensor<2, 3>
   plastic_strain(const UniaxialDriver &driver, const MaterialParameters &p)
@@ -336,6 +404,41 @@ namespace material_test
     const SymmetricTensor<2, 3> s = driver.stress();
     return driver.strain()
            - ((1. + nu) * s - nu * trace(s) * unit_symmetric_tensor<3>()) / E;
+  }
+
+  // Strain-driven uniaxial tension at `angle` to the rolling direction, n
+  // steps of d: ok if every step converged and the last was plastic; the
+  // axial stress and the plastic strain increment of the last step (load
+  // frame), whose ratio width / thickness is the r-value.
+  struct UniaxialFlow
+  {
+    bool                  ok;
+    double                stress;
+    SymmetricTensor<2, 3> plastic_increment;
+
+    double
+    r() const
+    {
+      return plastic_increment[1][1] / plastic_increment[2][2];
+    }
+  };
+
+  inline UniaxialFlow
+  uniaxial_flow(const ElastoPlasticity &material,
+                const double            angle,
+                const unsigned int      n = 20,
+                const double            d = 1e-3)
+  {
+    UniaxialDriver        driver(material, angle);
+    SymmetricTensor<2, 3> previous, current;
+    bool                  ok = true;
+    for (unsigned int step = 0; step < n; ++step)
+    {
+      ok       = ok && driver.strain_step(d);
+      previous = current;
+      current  = plastic_strain(driver, material.get_parameters());
+    }
+    return {ok && driver.plastic, driver.stress()[0][0], current - previous};
   }
 
   // Yld2004-18p of AA2090-T3, a = 8 (Barlat et al., Int. J. Plasticity 21
@@ -366,6 +469,24 @@ namespace material_test
                            1.40462}};
     p.yld2004_exponent = 8.;
     return p;
+  }
+
+  // The entries of subsection Material that select Yld2004-18p with the
+  // coefficients and exponent of p (for the tests that run a prm).
+  inline std::string
+  yld2004_prm_entries(const MaterialParameters &p)
+  {
+    const char *index[]
+      = {"12", "13", "21", "23", "31", "32", "44", "55", "66"};
+    std::ostringstream text;
+    text.precision(17);
+    text << "  set Yield criterion = Yld2004-18p\n  set Yld2004 exponent = "
+         << p.yld2004_exponent << "\n";
+    for (unsigned int k = 0; k < 9; ++k)
+      text << "  set Yld2004 c'" << index[k] << " = " << p.yld2004_c1[k]
+           << "\n  set Yld2004 c''" << index[k] << " = " << p.yld2004_c2[k]
+           << "\n";
+    return text.str();
   }
 
   // Root of a function changing sign on [a, b] by bisection to the last

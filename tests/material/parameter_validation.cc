@@ -270,56 +270,31 @@ main()
   }
 
   // Parameters set in code are validated by the ElastoPlasticity constructor,
-  // NaN included (a prm cannot give one: the Pattern refuses it).
+  // NaN and infinity included (a prm cannot give them: the Pattern refuses
+  // them).
   {
-    MaterialParameters parameters;
-    parameters.voce_A = std::numeric_limits<double>::quiet_NaN();
-    std::string message;
-    try
+    MaterialParameters hill, voce, yld2004;
+    hill.hill_G           = -0.2;
+    voce.voce_A           = std::numeric_limits<double>::quiet_NaN();
+    yld2004.yld2004_c2[3] = std::numeric_limits<double>::infinity();
+    for (const auto &[parameters, name] :
+         {std::make_pair(hill, std::string("Material/Hill G")),
+          std::make_pair(voce, std::string("Material/Voce A")),
+          std::make_pair(yld2004, std::string("Material/Yld2004 c''23"))})
     {
-      deepdraw::material::ElastoPlasticity material(parameters);
+      std::string message;
+      try
+      {
+        deepdraw::material::ElastoPlasticity material(parameters);
+      }
+      catch (const deepdraw::InputError &e)
+      {
+        message = e.what();
+      }
+      std::cout << "  [constructor] -> " << message << std::endl;
+      deepdraw_test::check_true("constructor throws naming " + name,
+                                message.find(name) != std::string::npos);
     }
-    catch (const deepdraw::InputError &e)
-    {
-      message = e.what();
-    }
-    std::cout << "  [constructor, Voce A = NaN] -> " << message << std::endl;
-    deepdraw_test::check_true("constructor throws naming Material/Voce A",
-                              message.find("Material/Voce A")
-                                != std::string::npos);
-    parameters               = MaterialParameters();
-    parameters.yld2004_c2[3] = std::numeric_limits<double>::infinity();
-    message.clear();
-    try
-    {
-      deepdraw::material::ElastoPlasticity material(parameters);
-    }
-    catch (const deepdraw::InputError &e)
-    {
-      message = e.what();
-    }
-    std::cout << "  [constructor, c''23 = inf] -> " << message << std::endl;
-    deepdraw_test::check_true("constructor throws naming Material/Yld2004 "
-                              "c''23",
-                              message.find("Material/Yld2004 c''23")
-                                != std::string::npos);
-  }
-  {
-    MaterialParameters parameters;
-    parameters.hill_G = -0.2;
-    std::string message;
-    try
-    {
-      deepdraw::material::ElastoPlasticity material(parameters);
-    }
-    catch (const deepdraw::InputError &e)
-    {
-      message = e.what();
-    }
-    std::cout << "  [constructor, Hill G = -0.2] -> " << message << std::endl;
-    deepdraw_test::check_true("constructor throws naming Material/Hill G",
-                              message.find("Material/Hill G")
-                                != std::string::npos);
   }
   return deepdraw_test::summary();
 }

@@ -66,78 +66,9 @@ main()
 
   for (const auto &[material_name, parameters] : materials)
   {
-    const ElastoPlasticity material(parameters);
     std::cout << material_name << std::endl;
-
-    // Pre-deformed state: on the yield surface after a plastic step,
-    // with back stress when k > 0.
-    MaterialPointState    virgin, predeformed;
-    SymmetricTensor<4, 3> T;
-    bool                  plastic;
-    material.update(virgin,
-                    strain(8e-3, -2e-3, -5e-3, 3e-3, 1e-3, -2e-3),
-                    predeformed,
-                    T,
-                    plastic);
-    deepdraw_test::check_true("pre-deformation is plastic", plastic);
-
-    for (const auto &[name, increment] : increments)
-      for (const bool from_predeformed : {false, true})
-      {
-        const MaterialPointState &old_state
-          = from_predeformed ? predeformed : virgin;
-        const double error
-          = tangent_error(material, old_state, increment, plastic);
-        deepdraw_test::check_true("  " + name
-                                    + (from_predeformed ? ", pre-deformed"
-                                                        : ", virgin")
-                                    + ": plastic step",
-                                  plastic);
-        deepdraw_test::check_close("  " + name
-                                     + (from_predeformed ? ", pre-deformed"
-                                                         : ", virgin")
-                                     + ": relative tangent error",
-                                   error,
-                                   0.,
-                                   1e-6);
-      }
-
-    // Elastic steps: small increment from the virgin state, and elastic
-    // unloading from the pre-deformed state.
-    for (const double scale : {1., -0.5})
-    {
-      const MaterialPointState &old_state = scale > 0 ? virgin : predeformed;
-      const double              error     = tangent_error(
-        material,
-        old_state,
-        scale * strain(1e-4, -0.5e-4, 0.2e-4, 0.8e-4, 0.1e-4, -0.3e-4),
-        plastic);
-      deepdraw_test::check_true(std::string("  elastic ")
-                                  + (scale > 0 ? "loading" : "unloading")
-                                  + ": elastic step",
-                                !plastic);
-      deepdraw_test::check_close(std::string("  elastic ")
-                                   + (scale > 0 ? "loading" : "unloading")
-                                   + ": relative tangent error",
-                                 error,
-                                 0.,
-                                 1e-6);
-    }
+    check_tangents(ElastoPlasticity(parameters), increments);
   }
-  // A non-finite increment makes update() report failure (the caller cuts
-  // the increment) instead of returning garbage.
-  {
-    const ElastoPlasticity material{MaterialParameters()};
-    MaterialPointState     old_state, new_state;
-    SymmetricTensor<4, 3>  T;
-    bool                   plastic;
-    deepdraw_test::check_true(
-      "NaN increment: update returns false",
-      !material.update(old_state,
-                       strain(std::nan(""), 0., 0., 0., 0., 0.),
-                       new_state,
-                       T,
-                       plastic));
-  }
+  check_nan_increment_fails(ElastoPlasticity(MaterialParameters()));
   return deepdraw_test::summary();
 }

@@ -105,21 +105,12 @@ namespace
   Prediction
   model(const ElastoPlasticity &material, const double angle)
   {
-    const MaterialParameters &p = material.get_parameters();
-    UniaxialDriver            driver(material, angle);
-    SymmetricTensor<2, 3>     previous, current;
-    bool                      ok = true;
-    for (unsigned int step = 0; step < 20; ++step)
-    {
-      ok       = ok && driver.strain_step(1e-3);
-      previous = current;
-      current  = plastic_strain(driver, p);
-    }
+    const UniaxialFlow flow = uniaxial_flow(material, angle);
     deepdraw_test::check_true("  " + std::to_string(int(angle))
                                 + " deg: 20 steps converged, plastic",
-                              ok && driver.plastic);
-    const SymmetricTensor<2, 3> d = current - previous;
-    return {driver.stress()[0][0] / p.swift_coefficient, d[1][1] / d[2][2]};
+                              flow.ok);
+    return {flow.stress / material.get_parameters().swift_coefficient,
+            flow.r()};
   }
 } // namespace
 
