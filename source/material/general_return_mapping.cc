@@ -41,15 +41,113 @@ namespace deepdraw
         double merit;
       };
 
-      // I + s H.
-      Matrix
-      identity_plus(const double s, const Matrix &H)
+      // Cholesky factor of A = I + beta Delta lambda H (positive definite:
+      // H is positive semi-definite for a convex sigma_bar); false if it
+      // is not.
+      bool
+      factorise(const Iterate &s, const double beta, Matrix &A)
       {
-        Matrix A;
         for (unsigned int I = 0; I < 6; ++I)
           for (unsigned int J = 0; J < 6; ++J)
-            A[I][J] = (I == J ? 1. : 0.) + s * H[I][J];
-        return A;
+            A[I][J] = (I == J ? 1. : 0.) + beta * s.dlambda * s.H[I][J];
+        return kelvin::cholesky(A);
+      }
+
+      // Newton correction from the Schur complement of the Jacobian
+      // [[A, beta n], [n^T, -Y']] (§4).
+      bool
+      newton_direction(const Iterate &s,
+                       const double   beta,
+                       Vector        &d_xi,
+                       double        &d_dlambda)
+      {
+        Matrix A;
+        if (!factorise(s, beta, A))
+          return false;
+        const Vector u = kelvin::solve(A, s.R);
+        const Vector v = kelvin::solve(A, s.n);
+        d_dlambda
+          = (s.f - kelvin::dot(s.n, u)) / (beta * kelvin::dot(s.n, v) + s.dY);
+        for (unsigned int I = 0; I < 6; ++I)
+          d_xi[I] = -u[I] - beta * d_dlambda * v[I];
+        return true;
+      }
+
+      // Moves `current` along the Newton direction: Delta lambda stays
+      // positive (Y(epbar) need not exist below epbar_n), then the step is
+      // halved until the merit decreases enough (the Newton direction is a
+      // descent direction for it). False if no step is accepted.
+      template <typename Evaluate>
+      bool
+      line_search(Iterate        &current,
+                  const Vector   &d_xi,
+                  const double    d_dlambda,
+                  const Evaluate &evaluate)
+      {
+        double alpha = 1.;
+        if (current.dlambda + d_dlambda < 0.)
+          alpha = 0.5 * current.dlambda / -d_dlambda;
+        Iterate trial;
+        for (unsigned int b = 0; b < max_backtracks; ++b, alpha *= 0.5)
+        {
+          for (unsigned int I = 0; I < 6; ++I)
+            trial.xi[I] = current.xi[I] + alpha * d_xi[I];
+          trial.dlambda = current.dlambda + alpha * d_dlambda;
+          if (evaluate(trial)
+              && trial.merit
+                   <= (1. - 2. * sufficient_decrease * alpha) * current.merit)
+          {
+            current = trial;
+            return true;
+          }
+        }
+        return false;
+      }
+
+      // Exact algorithmic tangent at the converged state s (§4), with
+      // A^{-1} = (I + beta dl H)^{-1}, b = A^{-1} n, P = I - 1(x)1/3:
+      //   T = K 1(x)1 + (2 mu / beta) P (k I + 2 mu A^{-1}) P
+      //       - 4 mu^2 b (x) b / (beta n.b + Y').
+      bool
+      algorithmic_tangent(const Iterate &s,
+                          const double   K,
+                          const double   mu,
+                          const double   k,
+                          Matrix        &T)
+      {
+        const double beta = 2. * mu + k;
+        Matrix       A, A_inverse, P;
+        if (!factorise(s, beta, A))
+          return false;
+        for (unsigned int J = 0; J < 6; ++J)
+        {
+          Vector e{};
+          e[J]                = 1.;
+          const Vector column = kelvin::solve(A, e);
+          for (unsigned int I = 0; I < 6; ++I)
+            A_inverse[I][J] = column[I];
+        }
+        const Vector b     = kelvin::solve(A, s.n);
+        const double kappa = 4. * mu * mu / (beta * kelvin::dot(s.n, b) + s.dY);
+        for (unsigned int I = 0; I < 6; ++I)
+          for (unsigned int J = 0; J < 6; ++J)
+            P[I][J] = (I == J ? 1. : 0.) - (I < 3 && J < 3 ? 1. / 3. : 0.);
+        for (unsigned int I = 0; I < 6; ++I)
+          for (unsigned int J = 0; J < 6; ++J)
+          {
+            double PAP = 0.; // (P A^{-1} P)_IJ
+            for (unsigned int M = 0; M < 6; ++M)
+              for (unsigned int N = 0; N < 6; ++N)
+                PAP += P[I][M] * A_inverse[M][N] * P[N][J];
+            T[I][J] = (I < 3 && J < 3 ? K : 0.)
+                      + 2. * mu / beta * (k * P[I][J] + 2. * mu * PAP)
+                      - kappa * b[I] * b[J];
+          }
+        // A^{-1} is symmetric up to round-off; T exactly.
+        for (unsigned int I = 0; I < 6; ++I)
+          for (unsigned int J = 0; J < I; ++J)
+            T[I][J] = T[J][I] = 0.5 * (T[I][J] + T[J][I]);
+        return true;
       }
     } // namespace
 
@@ -79,60 +177,26 @@ namespace deepdraw
         return std::isfinite(s.merit);
       };
 
-      Iterate current, trial;
+      // From the trial state: the first step is the cutting-plane step.
+      Iterate current;
       current.xi      = xi_trial;
       current.dlambda = 0.;
       if (!evaluate(current))
         return false;
-      const double scale     = std::sqrt(kelvin::dot(xi_trial, xi_trial));
-      bool         converged = false;
-      for (unsigned int iteration = 0; iteration < max_iterations; ++iteration)
+      const double scale = std::sqrt(kelvin::dot(xi_trial, xi_trial));
+      for (unsigned int iteration = 0;; ++iteration)
       {
         if (std::abs(current.f) <= residual_tolerance * current.Y
             && std::sqrt(kelvin::dot(current.R, current.R))
                  <= flow_tolerance * std::max(current.Y, scale))
-        {
-          converged = true;
           break;
-        }
-        // Newton direction from the Schur complement of the Jacobian
-        // [[A, beta n], [n^T, -Y']], A = I + beta Delta lambda H (SPD).
-        Matrix A = identity_plus(beta * current.dlambda, current.H);
-        if (!kelvin::cholesky(A))
-          return false;
-        const Vector u = kelvin::solve(A, current.R);
-        const Vector v = kelvin::solve(A, current.n);
-        const double d_dlambda
-          = (current.f - kelvin::dot(current.n, u))
-            / (beta * kelvin::dot(current.n, v) + current.dY);
         Vector d_xi;
-        for (unsigned int I = 0; I < 6; ++I)
-          d_xi[I] = -u[I] - beta * d_dlambda * v[I];
-
-        // Delta lambda stays positive (Y(epbar) need not exist below
-        // epbar_n); then halve the step until the merit decreases enough
-        // (the Newton direction is a descent direction for it).
-        double alpha = 1.;
-        if (current.dlambda + d_dlambda < 0.)
-          alpha = 0.5 * current.dlambda / -d_dlambda;
-        bool accepted = false;
-        for (unsigned int b = 0; b < max_backtracks && !accepted; ++b)
-        {
-          for (unsigned int I = 0; I < 6; ++I)
-            trial.xi[I] = current.xi[I] + alpha * d_xi[I];
-          trial.dlambda = current.dlambda + alpha * d_dlambda;
-          accepted      = evaluate(trial)
-                     && trial.merit <= (1. - 2. * sufficient_decrease * alpha)
-                                         * current.merit;
-          if (!accepted)
-            alpha *= 0.5;
-        }
-        if (!accepted)
+        double d_dlambda;
+        if (iteration == max_iterations
+            || !newton_direction(current, beta, d_xi, d_dlambda)
+            || !line_search(current, d_xi, d_dlambda, evaluate))
           return false;
-        current = trial;
       }
-      if (!converged)
-        return false;
 
       // New state: X = X_n + k Delta lambda n, sigma = X + xi,
       // epbar = epbar_n + Delta lambda (sigma_bar homogeneous of degree 1).
@@ -143,49 +207,9 @@ namespace deepdraw
       new_state.stress = new_state.back_stress + kelvin::to_tensor(current.xi);
       new_state.equivalent_plastic_strain = epbar_n + current.dlambda;
 
-      // Exact algorithmic tangent (§4), with A^{-1} = (I + beta dl H)^{-1}
-      // and b = A^{-1} n:
-      //   T = K 1(x)1 + (2 mu / beta) P (k I + 2 mu A^{-1}) P
-      //       - 4 mu^2 b (x) b / (beta n.b + Y'),   P = I - 1(x)1 / 3.
-      Matrix A = identity_plus(beta * current.dlambda, current.H);
-      if (!kelvin::cholesky(A))
-        return false;
-      Matrix A_inverse;
-      for (unsigned int J = 0; J < 6; ++J)
-      {
-        Vector e{};
-        e[J]             = 1.;
-        const Vector col = kelvin::solve(A, e);
-        for (unsigned int I = 0; I < 6; ++I)
-          A_inverse[I][J] = col[I];
-      }
-      const Vector b = kelvin::solve(A, current.n);
-      const double kappa
-        = 4. * mu * mu / (beta * kelvin::dot(current.n, b) + current.dY);
-      // P A^{-1} P: remove the row and column means of the normal block.
-      Matrix M;
-      for (unsigned int I = 0; I < 6; ++I)
-        for (unsigned int J = 0; J < 6; ++J)
-          M[I][J] = 0.5 * (A_inverse[I][J] + A_inverse[J][I]);
-      for (unsigned int pass = 0; pass < 2; ++pass)
-        for (unsigned int J = 0; J < 6; ++J)
-        {
-          double mean = 0.;
-          for (unsigned int I = 0; I < 3; ++I)
-            mean += (pass == 0 ? M[I][J] : M[J][I]) / 3.;
-          for (unsigned int I = 0; I < 3; ++I)
-            (pass == 0 ? M[I][J] : M[J][I]) -= mean;
-        }
       Matrix T;
-      for (unsigned int I = 0; I < 6; ++I)
-        for (unsigned int J = 0; J < 6; ++J)
-        {
-          const double projection
-            = (I == J ? 1. : 0.) - (I < 3 && J < 3 ? 1. / 3. : 0.);
-          T[I][J] = (I < 3 && J < 3 ? bulk_modulus : 0.)
-                    + 2. * mu / beta * (k * projection + 2. * mu * M[I][J])
-                    - kappa * b[I] * b[J];
-        }
+      if (!algorithmic_tangent(current, bulk_modulus, mu, k, T))
+        return false;
       kelvin::to_tensor(T, consistent_tangent);
       return true;
     }

@@ -14,8 +14,9 @@ namespace deepdraw
 
     namespace
     {
-      // Off-diagonal pairs of a symmetric 3 x 3 matrix, in the order of the
-      // spectral shear modes (doc/theory_material.md §3.2).
+      // Off-diagonal pairs of a symmetric 3 x 3 matrix: the order of the
+      // shear entries of the Kelvin storage (12, 13, 23) and of the spectral
+      // shear modes (doc/theory_material.md §3.2).
       constexpr unsigned int pairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
 
       struct Spectral
@@ -113,16 +114,15 @@ namespace deepdraw
       Matrix
       spectral_basis(const Spectral &spectral)
       {
-        const double       r           = std::sqrt(2.);
-        const unsigned int shear[3][2] = {{0, 1}, {0, 2}, {1, 2}};
-        Matrix             P;
+        const double r = std::sqrt(2.);
+        Matrix       P;
         for (unsigned int i = 0; i < 3; ++i)
         {
           const double *v = spectral.vectors[i];
           for (unsigned int k = 0; k < 3; ++k)
             P[i][k] = v[k] * v[k];
           for (unsigned int k = 0; k < 3; ++k)
-            P[i][3 + k] = r * v[shear[k][0]] * v[shear[k][1]];
+            P[i][3 + k] = r * v[pairs[k][0]] * v[pairs[k][1]];
         }
         for (unsigned int p = 0; p < 3; ++p)
         {
@@ -132,7 +132,7 @@ namespace deepdraw
             P[3 + p][k] = r * v[k] * w[k];
           for (unsigned int k = 0; k < 3; ++k)
           {
-            const unsigned int m = shear[k][0], n = shear[k][1];
+            const unsigned int m = pairs[k][0], n = pairs[k][1];
             P[3 + p][3 + k] = v[m] * w[n] + v[n] * w[m];
           }
         }
@@ -169,6 +169,95 @@ namespace deepdraw
           return (qx * x - qy * y) / (x - y);
         return qv * std::expm1((a - 1.) * std::log1p(t)) / t;
       }
+      // The nine differences S'_i - S''_j scaled by the largest, m, so that
+      // |x| <= 1 and no power overflows or underflows (§1.2): x, q = |x|^(a-2),
+      // phi_hat = sum q x^2 (sigma_bar = m phi_hat^(1/a) / phi_0^(1/a)) and
+      // g'_i = sum_j q x, g''_j = -sum_i q x (the gradient in the principal
+      // values up to a factor). m = 0 for S' = S'' = c I.
+      struct Differences
+      {
+        double m = 0., phi = 0.;
+        double x[3][3], q[3][3];
+        double g[2][3] = {};
+      };
+
+      Differences
+      differences(const Spectral spectral[2], const double a)
+      {
+        const double *l = spectral[0].values, *mu = spectral[1].values;
+        Differences   d;
+        for (unsigned int i = 0; i < 3; ++i)
+          for (unsigned int j = 0; j < 3; ++j)
+            d.m = std::max(d.m, std::abs(l[i] - mu[j]));
+        if (d.m == 0.)
+          return d;
+        for (unsigned int i = 0; i < 3; ++i)
+          for (unsigned int j = 0; j < 3; ++j)
+          {
+            const double x = (l[i] - mu[j]) / d.m;
+            d.x[i][j]      = x;
+            d.q[i][j]      = std::pow(std::abs(x), a - 2.);
+            d.phi += d.q[i][j] * x * x;
+            d.g[0][i] += d.q[i][j] * x;
+            d.g[1][j] -= d.q[i][j] * x;
+          }
+        return d;
+      }
+
+      // H = d^2 sigma / d xi^2 from the second derivatives in the spectral
+      // coordinates B[t] xi of S' and S'' (§3.2): diagonal within each of
+      // S', S'' (principal parts (a-1) c sum q, spin parts c sum D),
+      // coupled between the principal parts of S' and S'' (-(a-1) c q), and
+      // -(a-1) / sigma n (x) n; c = kappa / m.
+      void
+      assemble_hessian(const Differences &d,
+                       const double       a,
+                       const double       c,
+                       const Matrix       B[2],
+                       const double       sigma,
+                       const Vector      &n,
+                       Matrix            &H)
+      {
+        double diagonal[2][6] = {};
+        for (unsigned int i = 0; i < 3; ++i)
+          for (unsigned int j = 0; j < 3; ++j)
+          {
+            diagonal[0][i] += (a - 1.) * c * d.q[i][j];
+            diagonal[1][j] += (a - 1.) * c * d.q[i][j];
+          }
+        for (unsigned int p = 0; p < 3; ++p)
+        {
+          const unsigned int i = pairs[p][0], k = pairs[p][1];
+          for (unsigned int j = 0; j < 3; ++j)
+          {
+            diagonal[0][3 + p] += c
+                                  * divided_difference(d.x[i][j],
+                                                       d.x[k][j],
+                                                       d.q[i][j],
+                                                       d.q[k][j],
+                                                       a);
+            diagonal[1][3 + p] += c
+                                  * divided_difference(d.x[j][i],
+                                                       d.x[j][k],
+                                                       d.q[j][i],
+                                                       d.q[j][k],
+                                                       a);
+          }
+        }
+        for (unsigned int I = 0; I < 6; ++I)
+          for (unsigned int J = 0; J < 6; ++J)
+          {
+            double s = -(a - 1.) / sigma * n[I] * n[J];
+            for (unsigned int t = 0; t < 2; ++t)
+              for (unsigned int alpha = 0; alpha < 6; ++alpha)
+                s += diagonal[t][alpha] * B[t][alpha][I] * B[t][alpha][J];
+            for (unsigned int i = 0; i < 3; ++i)
+              for (unsigned int j = 0; j < 3; ++j)
+                s -= (a - 1.) * c * d.q[i][j]
+                     * (B[0][i][I] * B[1][j][J] + B[1][j][I] * B[0][i][J]);
+            H[I][J] = s;
+          }
+      }
     } // namespace
 
 
@@ -190,9 +279,8 @@ namespace deepdraw
                                    Vector       *gradient,
                                    Matrix       *hessian) const
     {
-      const double a = exponent;
       // A non-finite stress gives a non-finite sigma_bar (the caller then
-      // reports failure), not the 0 that std::max would make of NaN below.
+      // reports failure), not the 0 that std::max would make of NaN.
       double sum = 0.;
       for (const double x : xi)
         sum += x;
@@ -207,38 +295,21 @@ namespace deepdraw
             S[I] += transformation[t][I][J] * xi[J];
         spectral[t] = spectral_decomposition(S);
       }
-      const double *l = spectral[0].values, *mu = spectral[1].values;
       if (gradient != nullptr)
         gradient->fill(0.);
       if (hessian != nullptr)
         for (Vector &row : *hessian)
           row.fill(0.);
-
-      // Scaled by the largest difference m, so that |x| <= 1 and no power
-      // overflows or underflows; sigma_bar = m phi_hat^(1/a).
-      double m = 0.;
-      for (unsigned int i = 0; i < 3; ++i)
-        for (unsigned int j = 0; j < 3; ++j)
-          m = std::max(m, std::abs(l[i] - mu[j]));
-      if (m == 0.)
+      const Differences d = differences(spectral, exponent);
+      if (d.m == 0.)
         return 0.;
-      double x[3][3], q[3][3], phi = 0., g[2][3] = {};
-      for (unsigned int i = 0; i < 3; ++i)
-        for (unsigned int j = 0; j < 3; ++j)
-        {
-          x[i][j] = (l[i] - mu[j]) / m;
-          q[i][j] = std::pow(std::abs(x[i][j]), a - 2.);
-          phi += q[i][j] * x[i][j] * x[i][j];
-          g[0][i] += q[i][j] * x[i][j];
-          g[1][j] -= q[i][j] * x[i][j];
-        }
-      const double sigma = m * std::pow(phi, 1. / a);
+      const double sigma = d.m * std::pow(d.phi, 1. / exponent);
       if (gradient == nullptr)
         return sigma;
 
       // d sigma / d S'_i = kappa g'_i, d sigma / d S''_j = kappa g''_j;
       // B[t] = P[t] L[t] maps xi to the spectral coordinates of S', S''.
-      const double kappa = sigma / (m * phi);
+      const double kappa = sigma / (d.m * d.phi);
       Matrix       B[2];
       for (unsigned int t = 0; t < 2; ++t)
       {
@@ -253,47 +324,16 @@ namespace deepdraw
           }
         for (unsigned int i = 0; i < 3; ++i)
           for (unsigned int J = 0; J < 6; ++J)
-            (*gradient)[J] += kappa * g[t][i] * B[t][i][J];
+            (*gradient)[J] += kappa * d.g[t][i] * B[t][i][J];
       }
-      if (hessian == nullptr)
-        return sigma;
-
-      // Second derivatives in the spectral coordinates (§3.2): diagonal in
-      // each of S', S'' (principal and spin parts), coupled only between
-      // the principal parts of S' and S''.
-      const double c       = kappa / m;
-      double       d[2][6] = {};
-      for (unsigned int i = 0; i < 3; ++i)
-        for (unsigned int j = 0; j < 3; ++j)
-        {
-          d[0][i] += (a - 1.) * c * q[i][j];
-          d[1][j] += (a - 1.) * c * q[i][j];
-        }
-      for (unsigned int p = 0; p < 3; ++p)
-      {
-        const unsigned int i = pairs[p][0], k = pairs[p][1];
-        for (unsigned int j = 0; j < 3; ++j)
-        {
-          d[0][3 + p]
-            += c * divided_difference(x[i][j], x[k][j], q[i][j], q[k][j], a);
-          d[1][3 + p]
-            += c * divided_difference(x[j][i], x[j][k], q[j][i], q[j][k], a);
-        }
-      }
-      Matrix &H = *hessian;
-      for (unsigned int I = 0; I < 6; ++I)
-        for (unsigned int J = 0; J < 6; ++J)
-        {
-          double s = -(a - 1.) / sigma * (*gradient)[I] * (*gradient)[J];
-          for (unsigned int t = 0; t < 2; ++t)
-            for (unsigned int alpha = 0; alpha < 6; ++alpha)
-              s += d[t][alpha] * B[t][alpha][I] * B[t][alpha][J];
-          for (unsigned int i = 0; i < 3; ++i)
-            for (unsigned int j = 0; j < 3; ++j)
-              s -= (a - 1.) * c * q[i][j]
-                   * (B[0][i][I] * B[1][j][J] + B[1][j][I] * B[0][i][J]);
-          H[I][J] = s;
-        }
+      if (hessian != nullptr)
+        assemble_hessian(d,
+                         exponent,
+                         kappa / d.m,
+                         B,
+                         sigma,
+                         *gradient,
+                         *hessian);
       return sigma;
     }
 
