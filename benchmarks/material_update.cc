@@ -1,5 +1,6 @@
-// Micro-benchmark of ElastoPlasticity::update (NUMISHEET'93 aluminium, with
-// and without Prager): microseconds per elastic and per plastic update.
+// Micro-benchmark of ElastoPlasticity::update (NUMISHEET'93 aluminium with
+// Hill'48, with and without Prager, and Yld2004-18p with the AA2090-T3
+// coefficients, a = 8): microseconds per elastic and per plastic update.
 // Increments cycle through a table so the compiler cannot hoist the work.
 #include <chrono>
 #include <cstdio>
@@ -45,10 +46,34 @@ namespace
 int
 main()
 {
-  for (const double k : {0., 2000.})
+  MaterialParameters yld2004;
+  yld2004.yield_criterion  = YieldCriterion::yld2004_18p;
+  yld2004.yld2004_exponent = 8.;
+  yld2004.yld2004_c1       = {{-0.069888,
+                               0.936408,
+                               0.079143,
+                               1.00306,
+                               0.524741,
+                               1.36318,
+                               1.02377,
+                               1.06906,
+                               0.954322}};
+  yld2004.yld2004_c2       = {{0.981171,
+                               0.476741,
+                               0.575316,
+                               0.866827,
+                               1.14501,
+                               -0.079294,
+                               1.05166,
+                               1.1471,
+                               1.40462}};
+  MaterialParameters hill_prager;
+  hill_prager.prager_modulus = 2000.;
+  for (const auto &[name, parameters] :
+       {std::make_pair("Hill'48", MaterialParameters()),
+        std::make_pair("Hill'48, Prager k = 2000 MPa", hill_prager),
+        std::make_pair("Yld2004-18p AA2090-T3", yld2004)})
   {
-    MaterialParameters parameters;
-    parameters.prager_modulus = k;
     const ElastoPlasticity material(parameters);
 
     // A state on the yield surface after 2 % plastic straining.
@@ -82,9 +107,8 @@ main()
       = time_updates(material, loaded, plastic_increments, n, true);
     const double t_elastic
       = time_updates(material, loaded, elastic_increments, n, false);
-    std::printf("Prager k = %6.0f MPa: plastic update %.3f us, elastic "
-                "update %.3f us\n",
-                k,
+    std::printf("%s: plastic update %.3f us, elastic update %.3f us\n",
+                name,
                 t_plastic,
                 t_elastic);
   }
