@@ -2,6 +2,8 @@
 // Hill'48, with and without Prager, and Yld2004-18p with the AA2090-T3
 // coefficients, a = 8): microseconds per elastic and per plastic update.
 // Increments cycle through a table so the compiler cannot hoist the work.
+#include "../tests/material/material_test_tools.h"
+
 #include <chrono>
 #include <cstdio>
 #include <deepdraw/material/elasto_plasticity.h>
@@ -46,28 +48,9 @@ namespace
 int
 main()
 {
-  MaterialParameters yld2004;
-  yld2004.yield_criterion  = YieldCriterion::yld2004_18p;
-  yld2004.yld2004_exponent = 8.;
-  yld2004.yld2004_c1       = {{-0.069888,
-                               0.936408,
-                               0.079143,
-                               1.00306,
-                               0.524741,
-                               1.36318,
-                               1.02377,
-                               1.06906,
-                               0.954322}};
-  yld2004.yld2004_c2       = {{0.981171,
-                               0.476741,
-                               0.575316,
-                               0.866827,
-                               1.14501,
-                               -0.079294,
-                               1.05166,
-                               1.1471,
-                               1.40462}};
-  MaterialParameters hill_prager;
+  // The AA2090-T3 set of the material tests (one place for its numbers).
+  const MaterialParameters yld2004 = material_test::aa2090_t3_parameters();
+  MaterialParameters       hill_prager;
   hill_prager.prager_modulus = 2000.;
   for (const auto &[name, parameters] :
        {std::make_pair("Hill'48", MaterialParameters()),
