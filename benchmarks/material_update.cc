@@ -1,9 +1,12 @@
-// Micro-benchmark of HillPlasticity::update (NUMISHEET'93 aluminium, with
-// and without Prager): microseconds per elastic and per plastic update.
+// Micro-benchmark of ElastoPlasticity::update (NUMISHEET'93 aluminium with
+// Hill'48, with and without Prager, and Yld2004-18p with the AA2090-T3
+// coefficients, a = 8): microseconds per elastic and per plastic update.
 // Increments cycle through a table so the compiler cannot hoist the work.
+#include "../tests/material/material_test_tools.h"
+
 #include <chrono>
 #include <cstdio>
-#include <deepdraw/material/hill_plasticity.h>
+#include <deepdraw/material/elasto_plasticity.h>
 #include <vector>
 
 using namespace deepdraw::material;
@@ -11,7 +14,7 @@ using namespace deepdraw::material;
 namespace
 {
   double
-  time_updates(const HillPlasticity                             &material,
+  time_updates(const ElastoPlasticity                           &material,
                const MaterialPointState                         &old_state,
                const std::vector<dealii::SymmetricTensor<2, 3>> &increments,
                const unsigned int                                n,
@@ -45,11 +48,16 @@ namespace
 int
 main()
 {
-  for (const double k : {0., 2000.})
+  // The AA2090-T3 set of the material tests (one place for its numbers).
+  const MaterialParameters yld2004 = material_test::aa2090_t3_parameters();
+  MaterialParameters       hill_prager;
+  hill_prager.prager_modulus = 2000.;
+  for (const auto &[name, parameters] :
+       {std::make_pair("Hill'48", MaterialParameters()),
+        std::make_pair("Hill'48, Prager k = 2000 MPa", hill_prager),
+        std::make_pair("Yld2004-18p AA2090-T3", yld2004)})
   {
-    MaterialParameters parameters;
-    parameters.prager_modulus = k;
-    const HillPlasticity material(parameters);
+    const ElastoPlasticity material(parameters);
 
     // A state on the yield surface after 2 % plastic straining.
     MaterialPointState            virgin, loaded;
@@ -82,9 +90,8 @@ main()
       = time_updates(material, loaded, plastic_increments, n, true);
     const double t_elastic
       = time_updates(material, loaded, elastic_increments, n, false);
-    std::printf("Prager k = %6.0f MPa: plastic update %.3f us, elastic "
-                "update %.3f us\n",
-                k,
+    std::printf("%s: plastic update %.3f us, elastic update %.3f us\n",
+                name,
                 t_plastic,
                 t_elastic);
   }

@@ -2,7 +2,7 @@
 # Performance summary: builds the benchmark programs (in the existing build/
 # directory, or via scripts/setup.sh if there is none), runs
 #   bench_problem_assembly     assembly cost per cell of the reference blank
-#   bench_material_update      cost of one Hill'48 return mapping
+#   bench_material_update      cost of one return mapping (Hill'48, Yld2004-18p)
 #   bench_geometry_projection  closest-point projection (if present)
 # and a timed run of prm/tension_bar.prm (increments, Newton iterations per
 # increment and the time split from statistics.csv), then prints a summary.

@@ -54,7 +54,7 @@ namespace deepdraw
     interpolate_history(const fe::QuadraturePointHistory *parent,
                         const Quadrature<3>              &quadrature,
                         const Point<3>                   &xi,
-                        const material::HillPlasticity   &material)
+                        const material::ElastoPlasticity &material)
     {
       const std::vector<double>  w = trilinear_weights(quadrature, xi);
       fe::QuadraturePointHistory result;

@@ -21,9 +21,9 @@ namespace deepdraw
 
 
     HexahedronElement::HexahedronElement(
-      const ElementParameters        &parameters,
-      const material::HillPlasticity &material,
-      const FiniteElement<3>         &fe)
+      const ElementParameters          &parameters,
+      const material::ElastoPlasticity &material,
+      const FiniteElement<3>           &fe)
         : parameters(parameters)
         , material(material)
         , n_enhanced(n_enhanced_parameters(parameters.technology))

@@ -6,13 +6,13 @@ namespace deepdraw
   namespace fe
   {
     PointStatus
-    update_quadrature_point(const material::HillPlasticity &material,
-                            const QuadraturePointHistory   &old_history,
-                            const Tensor<2, 3>             &H,
-                            QuadraturePointHistory         &updated,
-                            Tensor<2, 3>                   &P,
-                            Tensor<4, 3>                   *tangent,
-                            bool                           &plastic)
+    update_quadrature_point(const material::ElastoPlasticity &material,
+                            const QuadraturePointHistory     &old_history,
+                            const Tensor<2, 3>               &H,
+                            QuadraturePointHistory           &updated,
+                            Tensor<2, 3>                     &P,
+                            Tensor<4, 3>                     *tangent,
+                            bool                             &plastic)
     {
       kinematics::HughesWingetIncrement increment;
       if (!increment.reinit(H))

@@ -110,7 +110,7 @@ namespace deepdraw
         void
         add(const SimulationAccess &simulation, VtuData &data) const override
         {
-          const material::HillPlasticity &material = simulation.material();
+          const material::ElastoPlasticity &material = simulation.material();
           add_cell_average(simulation,
                            data,
                            "equivalent_stress",

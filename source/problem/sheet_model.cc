@@ -21,7 +21,7 @@ namespace deepdraw
       parameters.check(contact_coupling);
 
       material_model
-        = std::make_unique<material::HillPlasticity>(parameters.material);
+        = std::make_unique<material::ElastoPlasticity>(parameters.material);
       system = linear_algebra::make_serial_system(parameters.linear_solver);
       discretisation.create(parameters.geometry);
       element = std::make_unique<fe::HexahedronElement>(
@@ -385,7 +385,7 @@ namespace deepdraw
     }
 
 
-    const material::HillPlasticity &
+    const material::ElastoPlasticity &
     SheetModel::material() const
     {
       return *material_model;

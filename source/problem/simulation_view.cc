@@ -69,7 +69,7 @@ namespace deepdraw
     }
 
 
-    const material::HillPlasticity &
+    const material::ElastoPlasticity &
     SimulationView::material() const
     {
       return model.material();

@@ -35,7 +35,7 @@
 #include <deepdraw/adaptivity/state_transfer.h>
 #include <deepdraw/adaptivity/vertex_placement.h>
 #include <deepdraw/fe/selective_reduced_quadrature.h>
-#include <deepdraw/material/hill_plasticity.h>
+#include <deepdraw/material/elasto_plasticity.h>
 
 using namespace dealii;
 using namespace deepdraw;
@@ -290,7 +290,7 @@ namespace
   }
 
   void
-  check_history(const material::HillPlasticity &material)
+  check_history(const material::ElastoPlasticity &material)
   {
     Block block;
     GridGenerator::subdivided_hyper_rectangle(block.triangulation,
@@ -450,7 +450,7 @@ main(int argc, char *argv[])
   check_freed_hanging_vertices();
   check_column_maximum();
 
-  const material::HillPlasticity material{material::MaterialParameters()};
+  const material::ElastoPlasticity material{material::MaterialParameters()};
   check_history(material);
   return deepdraw_test::summary();
 }

@@ -22,8 +22,10 @@
 //
 // Two cases: an elastic one (|A| = 1e-4), also compared with small-strain
 // Hooke's law, and a plastic one with 10 % strains and a rotation, where the
-// SRI and full stresses must coincide too (the SRI correction is zero).
+// SRI and full stresses must coincide too (the SRI correction is zero); the
+// plastic one with Hill'48 and with Yld2004-18p (AA2090-T3, Prager).
 #include "contact/forming_test_tools.h"
+#include "material/material_test_tools.h"
 #include "test_utilities.h"
 
 #include <array>
@@ -68,11 +70,13 @@ namespace
   }
 
   // The displacement u prescribed on all six faces of the unit cube.
+  // material: entries of subsection Material ("" = the defaults).
   std::string
   prm_text(const std::array<std::string, 3> &u,
            const std::string                &integration,
            const double                      increment,
-           const double                      final_load = 1.)
+           const double                      final_load = 1.,
+           const std::string                &material   = "")
   {
     const char *faces[6] = {"xmin", "xmax", "ymin", "ymax", "zmin", "zmax"};
     const char *components[3] = {"ux", "uy", "uz"};
@@ -88,7 +92,10 @@ namespace
            "  set Elements along x = 4\n  set Elements along y = 4\n"
            "  set Layers through thickness = 4\n  set Symmetry planes =\n"
            "  set Mesh distortion = 0.25\nend\n"
-           "subsection Finite element\n  set Element = "
+           "subsection Material\n"
+           + material
+           + "end\n"
+             "subsection Finite element\n  set Element = "
            + integration
            + "\nend\n"
              "subsection Boundary conditions\n"
@@ -121,11 +128,12 @@ namespace
   Result
   run_patch_test(const Tensor<2, 3> &A,
                  const std::string  &integration,
-                 const double        increment)
+                 const double        increment,
+                 const std::string  &material = "")
   {
     std::cout << integration << " integration, |A| = " << A.norm() << std::endl;
     const auto forming_problem = forming_test::run_from_text(
-      prm_text(affine_displacement(A), integration, increment),
+      prm_text(affine_displacement(A), integration, increment, 1., material),
       "patch-test-output");
 
     // Nodal displacements against u = A X at the final load t = 1.
@@ -252,32 +260,44 @@ main(int argc, char *argv[])
   for (unsigned int i = 0; i < 3; ++i)
     for (unsigned int j = 0; j < 3; ++j)
       A_plastic[i][j] = entries_plastic[i][j];
-  std::vector<Tensor<2, 3>> stress_by_integration;
-  for (const std::string integration :
-       {"full", "selective reduced", "incompatible modes"})
+  // Hill'48 (the default), then Yld2004-18p with the AA2090-T3
+  // coefficients (the general return mapping and its tangent in the
+  // element) and Prager kinematic hardening.
+  const std::string yld2004
+    = material_test::yld2004_prm_entries(material_test::aa2090_t3_parameters())
+      + "  set Prager modulus = 2000\n";
+  for (const std::string material : {std::string(), yld2004})
   {
-    const Result result = run_patch_test(A_plastic, integration, 0.25);
-    deepdraw_test::check_true("plastic: every point yielded (min epbar "
-                                + std::to_string(result.min_plastic_strain)
-                                + ")",
-                              result.min_plastic_strain > 0.01);
-    stress_by_integration.push_back(result.stress[0]);
+    const std::string         label = material.empty() ? "" : "Yld2004, ";
+    std::vector<Tensor<2, 3>> stress_by_integration;
+    for (const std::string integration :
+         {"full", "selective reduced", "incompatible modes"})
+    {
+      const Result result
+        = run_patch_test(A_plastic, integration, 0.25, material);
+      deepdraw_test::check_true("plastic: " + label
+                                  + "every point yielded (min epbar "
+                                  + std::to_string(result.min_plastic_strain)
+                                  + ")",
+                                result.min_plastic_strain > 0.01);
+      stress_by_integration.push_back(result.stress[0]);
+    }
+    // Uniform H: the SRI correction vanishes and the enhanced parameters
+    // stay zero (constant stress gives no enhanced force), so every element
+    // computes the same material point history.
+    deepdraw_test::check_close(
+      "plastic: " + label + "|sigma_SRI - sigma_full| / |sigma_full|",
+      (stress_by_integration[1] - stress_by_integration[0]).norm()
+        / stress_by_integration[0].norm(),
+      0.,
+      1e-10);
+    deepdraw_test::check_close(
+      "plastic: " + label + "|sigma_modes - sigma_full| / |sigma_full|",
+      (stress_by_integration[2] - stress_by_integration[0]).norm()
+        / stress_by_integration[0].norm(),
+      0.,
+      1e-10);
   }
-  // Uniform H: the SRI correction vanishes and the enhanced parameters stay
-  // zero (constant stress gives no enhanced force), so every element
-  // computes the same material point history.
-  deepdraw_test::check_close(
-    "plastic: |sigma_SRI - sigma_full| / |sigma_full|",
-    (stress_by_integration[1] - stress_by_integration[0]).norm()
-      / stress_by_integration[0].norm(),
-    0.,
-    1e-10);
-  deepdraw_test::check_close(
-    "plastic: |sigma_modes - sigma_full| / |sigma_full|",
-    (stress_by_integration[2] - stress_by_integration[0]).norm()
-      / stress_by_integration[0].norm(),
-    0.,
-    1e-10);
 
   // Rigid rotation of a stressed, distorted patch: the Hughes-Winget
   // rotation of a rigid increment is the increment's rotation exactly (the

@@ -9,7 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deal.II/base/parameter_handler.h>
-#include <deepdraw/material/hill_plasticity.h>
+#include <deepdraw/material/elasto_plasticity.h>
 #include <string>
 #include <vector>
 
@@ -34,7 +34,7 @@ namespace bending_reference
       prm.parse_input_from_string(material_prm);
       parameters.parse_parameters(prm);
       prm.leave_subsection();
-      const deepdraw::material::HillPlasticity material(parameters);
+      const deepdraw::material::ElastoPlasticity material(parameters);
 
       deepdraw::material::MaterialPointState state, next;
       SymmetricTensor<4, 3>                  tangent;

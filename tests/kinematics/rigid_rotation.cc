@@ -3,12 +3,14 @@
 // gradient gives Q equal to each incremental rotation exactly (Cayley
 // transform), so the stress must end as Q sigma Q^T with unchanged
 // invariants, and the orthotropy axes must have turned with the material.
+// With Hill'48 and with Yld2004-18p (AA2090-T3), both with Prager.
+#include "material/material_test_tools.h"
 #include "test_utilities.h"
 
 #include <cmath>
 #include <deal.II/base/parameter_handler.h>
 #include <deepdraw/fe/quadrature_point_update.h>
-#include <deepdraw/material/hill_plasticity.h>
+#include <deepdraw/material/elasto_plasticity.h>
 #include <deepdraw/material/material_parameters.h>
 
 using namespace dealii;
@@ -38,13 +40,13 @@ namespace
   }
 
   void
-  rotate_and_check(const Tensor<1, 3> &axis, const unsigned int n_increments)
+  rotate_and_check(const Tensor<1, 3>                 &axis,
+                   const unsigned int                  n_increments,
+                   const material::MaterialParameters &parameters)
   {
     std::cout << "axis " << axis << ", " << n_increments << " increments"
               << std::endl;
-    material::MaterialParameters parameters; // NUMISHEET'93 aluminium
-    parameters.prager_modulus = 2000.;
-    const material::HillPlasticity material(parameters);
+    const material::ElastoPlasticity material(parameters);
 
     // Pre-stress: a plastic multiaxial stretch.
     fe::QuadraturePointHistory state, next;
@@ -128,7 +130,15 @@ namespace
 int
 main()
 {
-  rotate_and_check(Tensor<1, 3>({0., 0., 1.}), 9);
-  rotate_and_check(Tensor<1, 3>({1., 2., -0.5}), 30);
+  // NUMISHEET'93 aluminium (Hill'48) with Prager hardening.
+  material::MaterialParameters parameters;
+  parameters.prager_modulus = 2000.;
+  rotate_and_check(Tensor<1, 3>({0., 0., 1.}), 9, parameters);
+  rotate_and_check(Tensor<1, 3>({1., 2., -0.5}), 30, parameters);
+  // Yld2004-18p (AA2090-T3) with Prager hardening.
+  std::cout << "Yld2004-18p" << std::endl;
+  material::MaterialParameters yld2004 = material_test::aa2090_t3_parameters();
+  yld2004.prager_modulus               = 2000.;
+  rotate_and_check(Tensor<1, 3>({1., 2., -0.5}), 30, yld2004);
   return deepdraw_test::summary();
 }

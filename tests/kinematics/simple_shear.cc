@@ -9,7 +9,7 @@
 
 #include <cmath>
 #include <deepdraw/fe/quadrature_point_update.h>
-#include <deepdraw/material/hill_plasticity.h>
+#include <deepdraw/material/elasto_plasticity.h>
 #include <deepdraw/material/material_parameters.h>
 
 using namespace dealii;
@@ -23,8 +23,8 @@ namespace
   {
     material::MaterialParameters parameters;
     parameters.swift_coefficient = 1e12; // stays elastic
-    const material::HillPlasticity material(parameters);
-    const double                   G
+    const material::ElastoPlasticity material(parameters);
+    const double                     G
       = parameters.youngs_modulus / (2. * (1. + parameters.poissons_ratio));
 
     const double gamma_end = 1.;

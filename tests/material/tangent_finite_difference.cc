@@ -1,4 +1,4 @@
-// The consistent tangent of HillPlasticity::update equals a central finite
+// The consistent tangent of ElastoPlasticity::update equals a central finite
 // difference of the stress update (doc/theory_material.md: the global Newton's
 // quadratic convergence relies on it). Elastic, plastic, kinematic hardening,
 // perfect plasticity, several multiaxial and large increments.
@@ -10,73 +10,9 @@
 #include "../test_utilities.h"
 #include "material_test_tools.h"
 
-#include <deepdraw/material/hill_plasticity.h>
+#include <deepdraw/material/elasto_plasticity.h>
 
 using namespace material_test;
-
-namespace
-{
-  SymmetricTensor<2, 3>
-  strain(const double e11,
-         const double e22,
-         const double e33,
-         const double e12,
-         const double e13,
-         const double e23)
-  {
-    SymmetricTensor<2, 3> e;
-    e[0][0] = e11;
-    e[1][1] = e22;
-    e[2][2] = e33;
-    e[0][1] = e12;
-    e[0][2] = e13;
-    e[1][2] = e23;
-    return e;
-  }
-
-  // Returns max |T_fd - T| / max |T| and whether the step was plastic.
-  double
-  tangent_error(const HillPlasticity        &material,
-                const MaterialPointState    &old_state,
-                const SymmetricTensor<2, 3> &increment,
-                bool                        &plastic)
-  {
-    MaterialPointState    new_state;
-    SymmetricTensor<4, 3> T, T_dummy;
-    if (!material.update(old_state, increment, new_state, T, plastic))
-      return 1e300;
-    const double h         = 1e-5 * std::max(increment.norm(), 1e-4);
-    double       max_error = 0., max_entry = 0.;
-    for (unsigned int J = 0; J < 6; ++J)
-    {
-      // Raw entry J: both (k,l) and (l,k) move by h, so d sigma = 2 T h
-      // for a shear column.
-      SymmetricTensor<2, 3> perturbation;
-      perturbation.access_raw_entry(J) = h;
-      MaterialPointState plus, minus;
-      bool               p_plus, p_minus;
-      if (!material
-             .update(old_state, increment + perturbation, plus, T_dummy, p_plus)
-          || !material.update(old_state,
-                              increment - perturbation,
-                              minus,
-                              T_dummy,
-                              p_minus)
-          || p_plus != plastic || p_minus != plastic)
-        return 1e300;
-      for (unsigned int I = 0; I < 6; ++I)
-      {
-        const double fd
-          = (plus.stress.access_raw_entry(I) - minus.stress.access_raw_entry(I))
-            / (2. * h);
-        const double exact = T.access_raw_entry(6 * I + J) * (J < 3 ? 1. : 2.);
-        max_error          = std::max(max_error, std::abs(fd - exact));
-        max_entry          = std::max(max_entry, std::abs(exact));
-      }
-    }
-    return max_error / max_entry;
-  }
-} // namespace
 
 int
 main()
@@ -130,78 +66,9 @@ main()
 
   for (const auto &[material_name, parameters] : materials)
   {
-    const HillPlasticity material(parameters);
     std::cout << material_name << std::endl;
-
-    // Pre-deformed state: on the yield surface after a plastic step,
-    // with back stress when k > 0.
-    MaterialPointState    virgin, predeformed;
-    SymmetricTensor<4, 3> T;
-    bool                  plastic;
-    material.update(virgin,
-                    strain(8e-3, -2e-3, -5e-3, 3e-3, 1e-3, -2e-3),
-                    predeformed,
-                    T,
-                    plastic);
-    deepdraw_test::check_true("pre-deformation is plastic", plastic);
-
-    for (const auto &[name, increment] : increments)
-      for (const bool from_predeformed : {false, true})
-      {
-        const MaterialPointState &old_state
-          = from_predeformed ? predeformed : virgin;
-        const double error
-          = tangent_error(material, old_state, increment, plastic);
-        deepdraw_test::check_true("  " + name
-                                    + (from_predeformed ? ", pre-deformed"
-                                                        : ", virgin")
-                                    + ": plastic step",
-                                  plastic);
-        deepdraw_test::check_close("  " + name
-                                     + (from_predeformed ? ", pre-deformed"
-                                                         : ", virgin")
-                                     + ": relative tangent error",
-                                   error,
-                                   0.,
-                                   1e-6);
-      }
-
-    // Elastic steps: small increment from the virgin state, and elastic
-    // unloading from the pre-deformed state.
-    for (const double scale : {1., -0.5})
-    {
-      const MaterialPointState &old_state = scale > 0 ? virgin : predeformed;
-      const double              error     = tangent_error(
-        material,
-        old_state,
-        scale * strain(1e-4, -0.5e-4, 0.2e-4, 0.8e-4, 0.1e-4, -0.3e-4),
-        plastic);
-      deepdraw_test::check_true(std::string("  elastic ")
-                                  + (scale > 0 ? "loading" : "unloading")
-                                  + ": elastic step",
-                                !plastic);
-      deepdraw_test::check_close(std::string("  elastic ")
-                                   + (scale > 0 ? "loading" : "unloading")
-                                   + ": relative tangent error",
-                                 error,
-                                 0.,
-                                 1e-6);
-    }
+    check_tangents(ElastoPlasticity(parameters), increments);
   }
-  // A non-finite increment makes update() report failure (the caller cuts
-  // the increment) instead of returning garbage.
-  {
-    const HillPlasticity  material{MaterialParameters()};
-    MaterialPointState    old_state, new_state;
-    SymmetricTensor<4, 3> T;
-    bool                  plastic;
-    deepdraw_test::check_true(
-      "NaN increment: update returns false",
-      !material.update(old_state,
-                       strain(std::nan(""), 0., 0., 0., 0., 0.),
-                       new_state,
-                       T,
-                       plastic));
-  }
+  check_nan_increment_fails(ElastoPlasticity(MaterialParameters()));
   return deepdraw_test::summary();
 }

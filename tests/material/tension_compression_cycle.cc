@@ -20,7 +20,7 @@
 #include "../test_utilities.h"
 #include "material_test_tools.h"
 
-#include <deepdraw/material/hill_plasticity.h>
+#include <deepdraw/material/elasto_plasticity.h>
 
 using namespace material_test;
 
@@ -70,9 +70,9 @@ main()
   {
     MaterialParameters p = von_mises_parameters();
     p.prager_modulus     = 2000.;
-    const HillPlasticity material(p);
-    const double         E = p.youngs_modulus, k = p.prager_modulus;
-    const auto           Y = [&](const double e)
+    const ElastoPlasticity material(p);
+    const double           E = p.youngs_modulus, k = p.prager_modulus;
+    const auto             Y = [&](const double e)
     {
       return p.swift_coefficient
              * std::pow(p.swift_prestrain + e, p.swift_exponent);
@@ -161,9 +161,9 @@ main()
   {
     MaterialParameters p;
     p.prager_modulus = 2000.;
-    const HillPlasticity material(p);
-    UniaxialDriver       driver(material, 0.);
-    bool                 ok = true;
+    const ElastoPlasticity material(p);
+    UniaxialDriver         driver(material, 0.);
+    bool                   ok = true;
     for (unsigned int step = 0; step < 25; ++step)
       ok = ok && driver.strain_step(2e-3);
     deepdraw_test::check_true("tension to 5 % converged", ok && driver.plastic);

@@ -16,7 +16,7 @@
 #include "../test_utilities.h"
 #include "material_test_tools.h"
 
-#include <deepdraw/material/hill_plasticity.h>
+#include <deepdraw/material/elasto_plasticity.h>
 #include <map>
 
 using namespace material_test;
@@ -42,7 +42,7 @@ main()
   std::cout << "(a) initial yield, NUMISHEET'93 aluminium (Swift)" << std::endl;
   {
     const MaterialParameters p;
-    const HillPlasticity     material(p);
+    const ElastoPlasticity   material(p);
     const double             Y0
       = p.swift_coefficient * std::pow(p.swift_prestrain, p.swift_exponent);
     // Explicit closed forms of the brief at 0, 45, 90 deg.
@@ -104,7 +104,7 @@ main()
     p.hill_N            = 1.9;
     p.hill_L            = 1.2;
     p.hill_M            = 1.4;
-    const HillPlasticity material(p);
+    const ElastoPlasticity material(p);
     for (const double angle : angles)
     {
       UniaxialDriver driver(material, angle);

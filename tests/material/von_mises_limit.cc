@@ -10,7 +10,7 @@
 #include "../test_utilities.h"
 #include "material_test_tools.h"
 
-#include <deepdraw/material/hill_plasticity.h>
+#include <deepdraw/material/elasto_plasticity.h>
 
 using namespace material_test;
 
@@ -132,7 +132,7 @@ main()
   for (const Case &c : cases)
   {
     std::cout << c.name << std::endl;
-    const HillPlasticity material(c.parameters);
+    const ElastoPlasticity material(c.parameters);
     for (const bool from_prestressed : {false, true})
       for (const auto &increment : increments)
       {
@@ -183,14 +183,14 @@ main()
   }
 
   // The Hill equivalent stress is exactly von Mises, and xi:M:xi = that^2.
-  const HillPlasticity        material(von_mises_parameters());
+  const ElastoPlasticity      material(von_mises_parameters());
   const SymmetricTensor<2, 3> xi = tensor({120., -40., 30., 50., -20., 10.});
   deepdraw_test::check_relative("sigma_bar = sqrt(3/2 |dev xi|^2)",
                                 material.equivalent_stress(xi),
                                 std::sqrt(1.5) * deviator(xi).norm(),
                                 1e-14);
   deepdraw_test::check_relative("xi : M : xi = sigma_bar^2",
-                                xi * material.hill_tensor() * xi,
+                                xi * material.hill48_criterion().tensor() * xi,
                                 1.5 * deviator(xi).norm() * deviator(xi).norm(),
                                 1e-14);
   return deepdraw_test::summary();

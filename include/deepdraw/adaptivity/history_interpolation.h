@@ -18,7 +18,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/quadrature.h>
 #include <deepdraw/fe/quadrature_point_update.h>
-#include <deepdraw/material/hill_plasticity.h>
+#include <deepdraw/material/elasto_plasticity.h>
 
 namespace deepdraw
 {
@@ -45,7 +45,7 @@ namespace deepdraw
     interpolate_history(const fe::QuadraturePointHistory *parent,
                         const Quadrature<3>              &quadrature,
                         const Point<3>                   &xi,
-                        const material::HillPlasticity   &material);
+                        const material::ElastoPlasticity   &material);
   } // namespace adaptivity
 } // namespace deepdraw
 

@@ -13,7 +13,7 @@
 #include <deepdraw/discretisation/sheet_discretisation.h>
 #include <deepdraw/fe/vertex_parents.h>
 #include <deepdraw/io/csv_file.h>
-#include <deepdraw/material/hill_plasticity.h>
+#include <deepdraw/material/elasto_plasticity.h>
 #include <deepdraw/state/simulation_state.h>
 #include <string>
 #include <vector>
@@ -66,7 +66,7 @@ namespace deepdraw
       std::vector<fe::VertexParents>
       refine(discretisation::SheetDiscretisation &sheet,
              state::SimulationState              &state,
-             const material::HillPlasticity      &material) const;
+             const material::ElastoPlasticity      &material) const;
 
       // The row of the refinement after its re-equilibration: the Newton
       // residuals at each of its checks and its iterations.

@@ -6,7 +6,7 @@
 
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/grid/tria.h>
-#include <deepdraw/material/hill_plasticity.h>
+#include <deepdraw/material/elasto_plasticity.h>
 #include <deepdraw/state/simulation_state.h>
 
 namespace deepdraw
@@ -43,7 +43,7 @@ namespace deepdraw
       VertexPlacement vertex_placement = VertexPlacement::linear;
       HistoryTransfer history          = HistoryTransfer::nearest;
       // Needed by HistoryTransfer::interpolated (the yield surface).
-      const material::HillPlasticity *material = nullptr;
+      const material::ElastoPlasticity *material = nullptr;
     };
 
     // Refines the triangulation as its refine flags say (isotropic, or any

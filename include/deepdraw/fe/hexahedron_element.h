@@ -62,9 +62,9 @@ namespace deepdraw
     {
     public:
       // fe: FESystem(FE_Q(1), 3), for the order of the local dofs.
-      HexahedronElement(const ElementParameters        &parameters,
-                        const material::HillPlasticity &material,
-                        const FiniteElement<3>         &fe);
+      HexahedronElement(const ElementParameters          &parameters,
+                        const material::ElastoPlasticity &material,
+                        const FiniteElement<3>           &fe);
 
       // Condensed residual (24) and, if matrix != nullptr, tangent
       // (24 x 24) for the local displacement increments du (local dof
@@ -103,10 +103,10 @@ namespace deepdraw
                      unsigned int        first,
                      double             *matrix) const;
 
-      ElementParameters               parameters;
-      const material::HillPlasticity &material;
-      unsigned int                    n_enhanced;
-      bool                            mean_dilatation;
+      ElementParameters                 parameters;
+      const material::ElastoPlasticity &material;
+      unsigned int                      n_enhanced;
+      bool                              mean_dilatation;
       // local dof i = component local_component[i] of node local_node[i]
       std::array<unsigned int, dofs_per_cell> local_component;
       std::array<unsigned int, dofs_per_cell> local_node;

@@ -16,7 +16,7 @@
 #define deepdraw_fe_quadrature_point_update_h
 
 #include <deal.II/base/tensor.h>
-#include <deepdraw/material/hill_plasticity.h>
+#include <deepdraw/material/elasto_plasticity.h>
 #include <deepdraw/material/material_point_state.h>
 
 namespace deepdraw
@@ -45,13 +45,13 @@ namespace deepdraw
     // Fills `updated`, P and (if tangent != nullptr) dP/dH with
     // (*tangent)[i][j][k][l] = dP_ij / dH_kl.
     PointStatus
-    update_quadrature_point(const material::HillPlasticity &material,
-                            const QuadraturePointHistory   &old_history,
-                            const Tensor<2, 3>             &H,
-                            QuadraturePointHistory         &updated,
-                            Tensor<2, 3>                   &P,
-                            Tensor<4, 3>                   *tangent,
-                            bool                           &plastic);
+    update_quadrature_point(const material::ElastoPlasticity &material,
+                            const QuadraturePointHistory     &old_history,
+                            const Tensor<2, 3>               &H,
+                            QuadraturePointHistory           &updated,
+                            Tensor<2, 3>                     &P,
+                            Tensor<4, 3>                     *tangent,
+                            bool                             &plastic);
 
     // Cauchy stress in global coordinates.
     Tensor<2, 3>

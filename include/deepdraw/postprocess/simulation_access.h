@@ -11,7 +11,7 @@
 #include <deepdraw/contact/contact_coupling.h>
 #include <deepdraw/discretisation/sheet_discretisation.h>
 #include <deepdraw/discretisation/thickness_measurement.h>
-#include <deepdraw/material/hill_plasticity.h>
+#include <deepdraw/material/elasto_plasticity.h>
 #include <deepdraw/process/stage.h>
 #include <deepdraw/state/simulation_state.h>
 #include <string>
@@ -57,7 +57,7 @@ namespace deepdraw
       sheet() const = 0;
       virtual const discretisation::ThicknessMeasurement &
       thickness() const = 0;
-      virtual const material::HillPlasticity &
+      virtual const material::ElastoPlasticity &
       material() const = 0;
       virtual const contact::ContactCoupling &
       contact() const = 0;

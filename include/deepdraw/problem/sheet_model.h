@@ -16,7 +16,7 @@
 #include <deepdraw/discretisation/thickness_measurement.h>
 #include <deepdraw/fe/hexahedron_element.h>
 #include <deepdraw/linear_algebra/newton_linear_system.h>
-#include <deepdraw/material/hill_plasticity.h>
+#include <deepdraw/material/elasto_plasticity.h>
 #include <deepdraw/problem/model_parameters.h>
 #include <deepdraw/state/checkpoint.h>
 #include <deepdraw/state/simulation_state.h>
@@ -128,7 +128,7 @@ namespace deepdraw
 
       const ModelParameters &
       model_parameters() const;
-      const material::HillPlasticity &
+      const material::ElastoPlasticity &
       material() const;
       discretisation::SheetDiscretisation &
       sheet();
@@ -204,7 +204,7 @@ namespace deepdraw
                           const std::vector<double>                &old_area);
 
       const ModelParameters                              &parameters;
-      std::unique_ptr<material::HillPlasticity>           material_model;
+      std::unique_ptr<material::ElastoPlasticity>           material_model;
       discretisation::SheetDiscretisation                 discretisation;
       std::unique_ptr<fe::HexahedronElement>              element;
       discretisation::ThicknessMeasurement                thickness_measurement;

@@ -57,7 +57,7 @@ namespace deepdraw
       sheet() const override;
       const discretisation::ThicknessMeasurement &
       thickness() const override;
-      const material::HillPlasticity &
+      const material::ElastoPlasticity &
       material() const override;
       const contact::ContactCoupling &
       contact() const override;

@@ -1,6 +1,9 @@
+// The return mapping of ElastoPlasticity for Hill'48 (doc/theory_material.md
+// §2-3): the closest-point projection solved in the eigenbasis of the Hill
+// tensor as one scalar equation, and its exact tangent in closed form.
 #include <algorithm>
 #include <cmath>
-#include <deepdraw/material/hill_plasticity.h>
+#include <deepdraw/material/elasto_plasticity.h>
 #include <limits>
 #include <utility>
 
@@ -27,183 +30,25 @@ namespace deepdraw
       // well below the yield-check tolerance so that a converged state
       // re-evaluated with a zero increment is elastic.
       constexpr double       residual_tolerance = 1e-13;
-      constexpr double       yield_tolerance    = 1e-12;
       constexpr unsigned int max_iterations     = 60;
     } // namespace
 
 
-    HillPlasticity::HillPlasticity(const MaterialParameters &parameters)
-        : parameters(parameters)
-    {
-      parameters.validate();
-
-      const double E  = parameters.youngs_modulus;
-      const double nu = parameters.poissons_ratio;
-      shear_modulus   = E / (2. * (1. + nu));
-      lame_lambda     = E * nu / ((1. + nu) * (1. - 2. * nu));
-      bulk_modulus    = E / (3. * (1. - 2. * nu));
-
-      for (unsigned int i = 0; i < 3; ++i)
-        for (unsigned int j = 0; j < 3; ++j)
-          elasticity[i][i][j][j]
-            = lame_lambda + (i == j ? 2. * shear_modulus : 0.);
-      elasticity[0][1][0][1] = elasticity[0][2][0][2] = elasticity[1][2][1][2]
-        = shear_modulus;
-
-      // Hill tensor: normal block P (sigma_bar^2 = xi_n . P xi_n + ...), and
-      // M_1212 = N/2 etc. because xi : M : xi counts xi_12 M_1212 xi_12 four
-      // times (12 and 21 in both pairs): 4 (N/2) xi_12^2 = 2 N xi_12^2.
-      const double F = parameters.hill_F, G = parameters.hill_G,
-                   H = parameters.hill_H;
-      const double P[3][3]
-        = {{G + H, -H, -G}, {-H, F + H, -F}, {-G, -F, F + G}};
-      for (unsigned int i = 0; i < 3; ++i)
-        for (unsigned int j = 0; j < 3; ++j)
-          hill[i][i][j][j] = P[i][j];
-      hill[0][1][0][1] = 0.5 * parameters.hill_N;
-      hill[0][2][0][2] = 0.5 * parameters.hill_M;
-      hill[1][2][1][2] = 0.5 * parameters.hill_L;
-
-      // Spectral form of M in the Kelvin basis. P (1,1,1) = 0 exactly, so the
-      // hydrostatic mode has eigenvalue 0; the other two lie in the deviatoric
-      // plane, spanned by d1 = (1,-1,0)/sqrt2, d2 = (1,1,-2)/sqrt6: diagonalise
-      // the 2x2 projection of P there in closed form.
-      const double d[2][3]
-        = {{1. / std::sqrt(2.), -1. / std::sqrt(2.), 0.},
-           {1. / std::sqrt(6.), 1. / std::sqrt(6.), -2. / std::sqrt(6.)}};
-      double p[2][2];
-      for (unsigned int a = 0; a < 2; ++a)
-        for (unsigned int b = 0; b < 2; ++b)
-        {
-          p[a][b] = 0.;
-          for (unsigned int i = 0; i < 3; ++i)
-            for (unsigned int j = 0; j < 3; ++j)
-              p[a][b] += d[a][i] * P[i][j] * d[b][j];
-        }
-      const double mean   = 0.5 * (p[0][0] + p[1][1]);
-      const double radius = std::hypot(0.5 * (p[0][0] - p[1][1]), p[0][1]);
-      const double theta  = 0.5 * std::atan2(2. * p[0][1], p[0][0] - p[1][1]);
-      const double c = std::cos(theta), s = std::sin(theta);
-      normal_eigenvalues[0] = mean + radius;
-      normal_eigenvalues[1] = mean - radius;
-      for (unsigned int i = 0; i < 3; ++i)
-      {
-        normal_eigenvectors[0][i] = c * d[0][i] + s * d[1][i];
-        normal_eigenvectors[1][i] = -s * d[0][i] + c * d[1][i];
-      }
-      // Raw order of the shear entries: 12, 13, 23.
-      shear_eigenvalues[0] = parameters.hill_N;
-      shear_eigenvalues[1] = parameters.hill_M;
-      shear_eigenvalues[2] = parameters.hill_L;
-      smallest_eigenvalue  = std::min({normal_eigenvalues[1],
-                                       shear_eigenvalues[0],
-                                       shear_eigenvalues[1],
-                                       shear_eigenvalues[2]});
-    }
-
-
-    double
-    HillPlasticity::equivalent_stress(const SymmetricTensor<2, 3> &xi) const
-    {
-      const double d23 = xi[1][1] - xi[2][2], d31 = xi[2][2] - xi[0][0],
-                   d12 = xi[0][0] - xi[1][1];
-      const double q   = parameters.hill_F * d23 * d23
-                       + parameters.hill_G * d31 * d31
-                       + parameters.hill_H * d12 * d12
-                       + 2.
-                           * (parameters.hill_L * xi[1][2] * xi[1][2]
-                              + parameters.hill_M * xi[0][2] * xi[0][2]
-                              + parameters.hill_N * xi[0][1] * xi[0][1]);
-      return std::sqrt(std::max(q, 0.));
-    }
-
-
-    void
-    HillPlasticity::swift(const double epbar, double &Y, double &dY) const
-    {
-      const double strain = parameters.swift_prestrain + epbar;
-      Y                   = parameters.swift_coefficient
-          * std::pow(strain, parameters.swift_exponent);
-      dY = parameters.swift_exponent * Y / strain;
-    }
-
-
-    double
-    HillPlasticity::yield_stress(const double equivalent_plastic_strain) const
-    {
-      double Y, dY;
-      swift(equivalent_plastic_strain, Y, dY);
-      return Y;
-    }
-
-
-    double
-    HillPlasticity::hardening_modulus(
-      const double equivalent_plastic_strain) const
-    {
-      double Y, dY;
-      swift(equivalent_plastic_strain, Y, dY);
-      return dY;
-    }
-
-
-    const SymmetricTensor<4, 3> &
-    HillPlasticity::elasticity_tensor() const
-    {
-      return elasticity;
-    }
-
-
-    const SymmetricTensor<4, 3> &
-    HillPlasticity::hill_tensor() const
-    {
-      return hill;
-    }
-
-
-    const MaterialParameters &
-    HillPlasticity::get_parameters() const
-    {
-      return parameters;
-    }
-
-
     bool
-    HillPlasticity::update(const MaterialPointState    &old_state,
-                           const SymmetricTensor<2, 3> &strain_increment,
-                           MaterialPointState          &new_state,
-                           SymmetricTensor<4, 3>       &consistent_tangent,
-                           bool                        &plastic) const
+    ElastoPlasticity::return_mapping_hill48(
+      const MaterialPointState    &old_state,
+      const SymmetricTensor<2, 3> &xi_trial,
+      const double                 sigma_bar_trial,
+      const double                 Y_n,
+      const double                 dY_n,
+      MaterialPointState          &new_state,
+      SymmetricTensor<4, 3>       &consistent_tangent) const
     {
-      const double mu = shear_modulus;
-
-      // Elastic predictor: sigma_trial = sigma_n + C : d_eps.
-      const double          volumetric = lame_lambda * trace(strain_increment);
-      SymmetricTensor<2, 3> stress_trial = old_state.stress;
-      for (unsigned int I = 0; I < 6; ++I)
-        stress_trial.access_raw_entry(I)
-          += 2. * mu * strain_increment.access_raw_entry(I)
-             + (I < 3 ? volumetric : 0.);
-      const SymmetricTensor<2, 3> xi_trial
-        = stress_trial - old_state.back_stress;
-
-      const double sigma_bar_trial = equivalent_stress(xi_trial);
-      double       Y_n, dY_n;
-      swift(old_state.equivalent_plastic_strain, Y_n, dY_n);
-      plastic = false;
-      if (!std::isfinite(sigma_bar_trial) || !std::isfinite(Y_n))
-        return false;
-
-      if (sigma_bar_trial - Y_n <= yield_tolerance * Y_n)
-      {
-        new_state.stress      = stress_trial;
-        new_state.back_stress = old_state.back_stress;
-        new_state.equivalent_plastic_strain
-          = old_state.equivalent_plastic_strain;
-        consistent_tangent = elasticity;
-        return true;
-      }
-      plastic = true;
+      const double mu                  = shear_modulus;
+      const auto  &normal_eigenvalues  = hill48.spectrum().normal_eigenvalues;
+      const auto  &normal_eigenvectors = hill48.spectrum().normal_eigenvectors;
+      const auto  &shear_eigenvalues   = hill48.spectrum().shear_eigenvalues;
+      const double smallest_eigenvalue = hill48.spectrum().smallest_eigenvalue;
 
       // Plastic corrector. With Delta eps^p = Delta lambda M:xi / sigma_bar,
       // Delta X = k Delta eps^p and C:M:xi = 2 mu M:xi (M deviatoric):
@@ -251,7 +96,7 @@ namespace deepdraw
           Q += mw * mw * r;
         }
         sigma_bar = std::sqrt(s2);
-        swift(epbar_n + gamma * sigma_bar, Y, dY);
+        hardening.evaluate(epbar_n + gamma * sigma_bar, Y, dY);
         const double dsigma_bar = -beta * Q / sigma_bar;
         return std::make_pair(1. / sigma_bar - 1. / Y,
                               -dsigma_bar / (sigma_bar * sigma_bar)
