@@ -7,7 +7,8 @@
 // normal turns quickly there; in plane strain r has no effect for a
 // power-law material (the scalar relation of mk_plane_strain.cc depends on
 // r only through eps0). Normal anisotropy r = 0.5, 1, 2; n = 0.2,
-// f0 = 0.99.
+// f0 = 0.99. The plane-strain limits differ by 4.7e-5 relative at most
+// (measured; eps0 = 1e-4 and the steps): 2e-4 allowed.
 #include "../test_utilities.h"
 #include "formability_test_tools.h"
 
@@ -46,6 +47,6 @@ main()
     deepdraw_test::check_relative("plane strain limit independent of r",
                                   plane_strain[k],
                                   plane_strain[1],
-                                  1e-3);
+                                  2e-4);
   return deepdraw_test::summary();
 }
