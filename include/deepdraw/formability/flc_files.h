@@ -1,5 +1,7 @@
 // flc.csv and flc.png: the forming-limit curve of subsection Formability as
-// a table and a picture (doc/user_guide.md §8; deepdraw --flc).
+// a table and a picture (doc/user_guide.md §8; deepdraw --flc); the picture
+// of a forming-limit diagram with it (fld_<travel>mm.png of the
+// post-processor "forming limits").
 #ifndef deepdraw_formability_flc_files_h
 #define deepdraw_formability_flc_files_h
 
@@ -30,6 +32,18 @@ namespace deepdraw
                     const material::MaterialParameters &material,
                     double                              sheet_thickness,
                     const std::string                  &directory);
+
+    // Writes directory/<stem>.gp and, by gnuplot, <stem>.png: the points of
+    // <stem>.csv (columns X, Y, surface, eps2, eps1, margin,
+    // margin_percent, zone) coloured by zone over the curve of flc.csv in
+    // the same directory and its safety band; `when` goes into the title
+    // ("t = 20 mm"). Returns the console line about the picture.
+    std::string
+    write_fld_plot(const std::string       &directory,
+                   const std::string       &stem,
+                   const FormingLimitCurve &curve,
+                   const FldZoneParameters &zones,
+                   const std::string       &when);
   } // namespace formability
 } // namespace deepdraw
 
