@@ -1,6 +1,7 @@
 """What the script tests (tests/<label>/*_test.py, tests/cad/square_cup_step.py)
 share: their command line, a fresh work directory, running deepdraw, and
-comparing CSV tables of two runs column by column.
+comparing CSV tables of two runs column by column; the check scripts of the
+prm tests read tables with rows().
 
     import script_test  (after sys.path.insert of the tests directory)
 """
@@ -54,6 +55,14 @@ def table(path):
     return rows[0], [[float(x) for x in row] for row in rows[1:] if row]
 
 
+def rows(path):
+    """The rows of a CSV table as {column: float} (the check scripts of the
+    prm tests import this module too)."""
+    with open(path) as f:
+        return [{k: float(v) for k, v in row.items()}
+                for row in csv.DictReader(f)]
+
+
 def compare_tables(expected_directory, actual_directory, names, tolerance):
     """Every column of the tables `names` of two runs: the largest
     difference relative to the column's largest magnitude must be at most
@@ -94,6 +103,22 @@ def comparable_table(path, skipped=("symbolic_analyses",)):
     keep = [j for j, name in enumerate(rows[0])
             if not name.endswith("_s") and name not in skipped]
     return [[row[j] for j in keep] for row in rows]
+
+
+def compare_runs(expected_directory, actual_directory, what):
+    """Every CSV table of expected_directory against the one of the same
+    name in actual_directory (comparable_table: byte for byte but for the
+    wall times); prints each; returns the failures, "<table> differs from
+    <what>"."""
+    failures = []
+    for table in sorted(p.name for p in
+                        pathlib.Path(expected_directory).glob("*.csv")):
+        same = comparable_table(pathlib.Path(expected_directory) / table) == \
+            comparable_table(pathlib.Path(actual_directory) / table)
+        print("%s %s" % ("same" if same else "DIFFERENT", table))
+        if not same:
+            failures.append(table + " differs from " + what)
+    return failures
 
 
 def snapshot(directory):

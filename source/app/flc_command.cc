@@ -17,19 +17,6 @@ namespace deepdraw
   {
     namespace
     {
-      // Subsection Formability, unless the program's own declaration
-      // (FormingProblem::declare_parameters) has it already.
-      void
-      declare_formability(dealii::ParameterHandler &prm)
-      {
-        if (prm.subsection_path_exists({"Formability"}))
-          return;
-        prm.enter_subsection("Formability");
-        formability::FormabilityParameters::declare_parameters(prm);
-        prm.leave_subsection();
-      }
-
-
       struct FlcInput
       {
         formability::FormabilityParameters              formability;
@@ -43,9 +30,10 @@ namespace deepdraw
       read_input(const std::string &prm_file,
                  const std::string &output_directory)
       {
+        // Every subsection of the program, Formability with them (declared
+        // by the post-processor "forming limits").
         dealii::ParameterHandler prm;
         problem::FormingProblem::declare_parameters(prm);
-        declare_formability(prm);
         io::read_parameter_file(prm, prm_file);
         const auto        slash = prm_file.find_last_of('/');
         const std::string input_directory

@@ -20,7 +20,7 @@ import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
 import script_test  # noqa: E402
-from script_test import comparable_table, run, snapshot  # noqa: E402
+from script_test import run, snapshot  # noqa: E402
 
 def main():
     args, source, work = script_test.start(__doc__)
@@ -33,12 +33,8 @@ def main():
     failures = []
     if "resumed at load 0.6" not in log:
         failures.append("the run did not resume at load 0.6")
-    for table in sorted(p.name for p in (work / "fresh").glob("*.csv")):
-        same = comparable_table(work / "fresh" / table) == \
-            comparable_table(work / "resumed" / table)
-        print("%s %s" % ("same" if same else "DIFFERENT", table))
-        if not same:
-            failures.append(table + " differs from the run from the start")
+    failures += script_test.compare_runs(work / "fresh", work / "resumed",
+                                         "the run from the start")
 
     shutil.copytree(data / "output", work / "refused")
     before = snapshot(work / "refused")

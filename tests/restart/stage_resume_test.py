@@ -21,7 +21,7 @@ import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
 import script_test  # noqa: E402
-from script_test import comparable_table, run, snapshot  # noqa: E402
+from script_test import run, snapshot  # noqa: E402
 
 def main():
     args, source, work = script_test.start(__doc__)
@@ -38,12 +38,8 @@ def main():
     failures = []
     if "resumed at load 2" not in log:
         failures.append("the resumed run did not start at the end of stage 2")
-    for table in sorted(p.name for p in (work / "full").glob("*.csv")):
-        same = comparable_table(work / "full" / table) == \
-            comparable_table(work / "resumed" / table)
-        print("%s %s" % ("same" if same else "DIFFERENT", table))
-        if not same:
-            failures.append(table + " differs from the uninterrupted run")
+    failures += script_test.compare_runs(work / "full", work / "resumed",
+                                         "the uninterrupted run")
 
     # A later stage may change: twice the holder's travel in stage 3.
     shutil.copytree(work / "full", work / "changed")

@@ -1,8 +1,7 @@
 // deepdraw --flc FILE.prm (doc/user_guide.md §8): the forming-limit curve
 // of the prm's subsection Formability, computed from its subsection
 // Material where it is a Marciniak-Kuczynski curve, written as flc.csv and
-// flc.png. Not yet an option of source/main.cc: the command line of the
-// program calls this function once it is wired there.
+// flc.png (app::flc_command reads the command line).
 #ifndef deepdraw_app_flc_command_h
 #define deepdraw_app_flc_command_h
 
