@@ -1,9 +1,14 @@
 # Picture of a deepdraw run at one punch travel: the sheet coloured by its
-# thickness strain, the tools translucent, isometric view, white background.
+# thickness strain (or another field), the tools translucent, isometric
+# view, white background.
 #   pvpython --force-offscreen-rendering scripts/render_square_cup.py \
-#       OUTPUT_DIR PNG_FILE [TRAVEL]
+#       OUTPUT_DIR PNG_FILE [TRAVEL [FIELD [WIDTH]]]
 # (scripts/render_square_cup.sh finds pvpython and a virtual X server.)
 # TRAVEL is the pvd time (punch travel in mm); default: the last step.
+# FIELD: thickness_strain (default, a point field), or flc_margin: the least
+# of the cell fields flc_margin_bottom, _mid, _top of the post-processor
+# "forming limits" (doc/user_guide.md §8.2). WIDTH: of the picture in
+# pixels (default 1600; the height is 5/8 of it, the fonts scale with it).
 # A quarter model (sheet touching x = 0 and y = 0 from the positive side) is
 # mirrored about both planes so that the whole cup is seen.
 import os
@@ -12,9 +17,25 @@ import xml.etree.ElementTree as ElementTree
 
 from paraview.simple import *  # noqa: F401,F403  (the pvpython idiom)
 
-if len(sys.argv) not in (3, 4):
-    sys.exit("usage: render_square_cup.py OUTPUT_DIR PNG_FILE [TRAVEL]")
+if len(sys.argv) not in (3, 4, 5, 6):
+    sys.exit("usage: render_square_cup.py OUTPUT_DIR PNG_FILE "
+             "[TRAVEL [FIELD [WIDTH]]]")
 output_dir, png_file = sys.argv[1], sys.argv[2]
+field = sys.argv[4] if len(sys.argv) >= 5 else "thickness_strain"
+try:
+    width = int(sys.argv[5]) if len(sys.argv) == 6 else 1600
+except ValueError:
+    width = 0
+if not 100 <= width <= 8000:
+    sys.exit("render: WIDTH must be a number of pixels from 100 to 8000")
+# The colour bar's title of each field; low values are red in both (thinning,
+# little margin left).
+titles = {"thickness_strain": "thickness strain ln(t/t0)",
+          "flc_margin": "margin to the FLC, eps1*(eps2) - eps1\n"
+                        "(least of bottom, mid, top)"}
+if field not in titles:
+    sys.exit("render: FIELD must be one of %s, not '%s'"
+             % (", ".join(sorted(titles)), field))
 pvd = os.path.join(output_dir, "solution.pvd")
 if not os.path.isfile(pvd):
     sys.exit("render: no %s" % pvd)
@@ -30,7 +51,7 @@ for entry in ElementTree.parse(pvd).getroot().iter("DataSet"):
     steps[-1][1].append(entry.get("file"))
 if not steps:
     sys.exit("render: %s lists no data set" % pvd)
-if len(sys.argv) == 4:
+if len(sys.argv) >= 4:
     try:
         travel = float(sys.argv[3])
     except ValueError:
@@ -71,15 +92,34 @@ def mirrored(source, about_x, about_y):
 # Lagrangian), so no WarpByVector is needed.
 sheet = read(sheet_file)
 sheet.UpdatePipeline()
-if "thickness_strain" not in sheet.PointData.keys():
-    sys.exit("render: %s has no point field thickness_strain (fields: %s)"
-             % (sheet_file, ", ".join(sheet.PointData.keys())))
+# deal.II writes a cell field at the vertices of each cell (its patch), so
+# it arrives as point data, constant over each cell.
+if field == "flc_margin":
+    surfaces = ["flc_margin_%s" % s for s in ("bottom", "mid", "top")]
+    missing = [a for a in surfaces if a not in sheet.PointData.keys()]
+    if missing:
+        sys.exit("render: %s has no field %s (VTU field 'flc margin' of the "
+                 "post-processor 'forming limits')"
+                 % (sheet_file, ", ".join(missing)))
+    # min(a, b) = (a + b - |a - b|)/2: the calculator's min is a reduction.
+    pair = "(%s + %s - abs(%s - %s)) / 2"
+    lower = pair % (surfaces[0], surfaces[1], surfaces[0], surfaces[1])
+    sheet = PythonCalculator(Input=sheet, ArrayAssociation="Point Data",
+                             ArrayName=field,
+                             Expression=pair % (lower, surfaces[2], lower,
+                                                surfaces[2]))
+    sheet.UpdatePipeline()
+elif field not in sheet.PointData.keys():
+    sys.exit("render: %s has no point field %s (fields: %s)"
+             % (sheet_file, field, ", ".join(sheet.PointData.keys())))
 xmin, xmax, ymin, ymax, zmin, zmax = sheet.GetDataInformation().GetBounds()
 tolerance = 1e-6 * max(xmax - xmin, ymax - ymin, 1.0)
 mirror_x, mirror_y = abs(xmin) < tolerance, abs(ymin) < tolerance
 
 view = GetActiveViewOrCreate("RenderView")
-view.ViewSize = [1600, 1000]
+view.ViewSize = [width, width * 5 // 8]
+# Fonts and lines in proportion to the picture (drawn for 1600 pixels).
+zoom = width / 1600.0
 view.Background = [1, 1, 1]
 if hasattr(view, "UseColorPaletteForBackground"):  # ParaView >= 5.10
     view.UseColorPaletteForBackground = 0
@@ -90,22 +130,22 @@ whole_sheet = mirrored(sheet, mirror_x, mirror_y)
 display = Show(whole_sheet, view)
 display.SetRepresentationType("Surface With Edges")
 display.EdgeColor = [0.25, 0.25, 0.25]
-ColorBy(display, ("POINTS", "thickness_strain"))
-lut = GetColorTransferFunction("thickness_strain")
+ColorBy(display, ("POINTS", field))
+lut = GetColorTransferFunction(field)
 # Thinning (negative, where the cup fails) in red; a rainbow without dark
 # ends keeps the small strains of the bottom and the flange readable.
 if not lut.ApplyPreset("Rainbow Uniform", True):
     lut.ApplyPreset("Jet", True)
 lut.InvertTransferFunction()
-low, high = sheet.PointData["thickness_strain"].GetRange()
+low, high = sheet.PointData[field].GetRange()
 if high - low < 1e-12:  # a flat field still needs a usable bar
     low, high = low - 1e-3, high + 1e-3
 lut.RescaleTransferFunction(low, high)
 bar = GetScalarBar(lut, view)
-bar.Title = "thickness strain ln(t/t0)"
+bar.Title = titles[field]
 bar.ComponentTitle = ""
 bar.TitleColor = bar.LabelColor = [0, 0, 0]
-bar.TitleFontSize = bar.LabelFontSize = 20
+bar.TitleFontSize = bar.LabelFontSize = max(8, round(20 * zoom))
 bar.RangeLabelFormat = "%-#.3g"
 bar.ScalarBarLength = 0.5
 bar.WindowLocation = "Any Location"
@@ -156,12 +196,12 @@ for k, name in enumerate(sorted(tool_files)):
     edges_display = Show(edges, view)
     edges_display.ColorArrayName = ["POINTS", ""]
     edges_display.AmbientColor = edges_display.DiffuseColor = [0.3] * 3
-    edges_display.LineWidth = 2
+    edges_display.LineWidth = max(1.0, 2 * zoom)
 
 label = Text(Text="punch travel %g mm" % time)
 label_display = Show(label, view)
 label_display.Color = [0, 0, 0]
-label_display.FontSize = 22
+label_display.FontSize = max(8, round(22 * zoom))
 label_display.WindowLocation = "Upper Left Corner"
 
 # Isometric: parallel projection, looking down the (-1, 1, -1) diagonal so
@@ -192,6 +232,6 @@ view.CameraPosition = [focus[d] - 10 * size * look[d] for d in range(3)]
 view.CameraViewUp = up
 view.CameraParallelScale = scale
 
-SaveScreenshot(png_file, view, ImageResolution=[1600, 1000],
+SaveScreenshot(png_file, view, ImageResolution=[width, width * 5 // 8],
                TransparentBackground=0)
 print("render: wrote %s" % png_file)

@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
 # Renders the sheet and the tools of a deepdraw run at one punch travel into a
 # PNG (see render_square_cup.py):
-#   scripts/render_square_cup.sh OUTPUT_DIR PNG_FILE [TRAVEL]
+#   scripts/render_square_cup.sh OUTPUT_DIR PNG_FILE [TRAVEL [FIELD [WIDTH]]]
 # Needs pvpython (Debian: python3-paraview) and, without a display, Xvfb
 # (Debian: xvfb): Debian's ParaView renders through X only (no EGL/OSMesa),
 # so --force-offscreen-rendering alone aborts with "bad X server connection".
 set -euo pipefail
 
-if [ $# -lt 2 ] || [ $# -gt 3 ]; then
-  echo "usage: $0 OUTPUT_DIR PNG_FILE [TRAVEL]" >&2
+if [ $# -lt 2 ] || [ $# -gt 5 ]; then
+  echo "usage: $0 OUTPUT_DIR PNG_FILE [TRAVEL [FIELD [WIDTH]]]" >&2
   exit 2
 fi
 script="$(dirname "$0")/render_square_cup.py"

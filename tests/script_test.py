@@ -1,6 +1,7 @@
 """What the script tests (tests/<label>/*_test.py, tests/cad/square_cup_step.py)
 share: their command line, a fresh work directory, running deepdraw, and
-comparing CSV tables of two runs column by column.
+comparing CSV tables of two runs column by column; the check scripts of the
+prm tests read tables with rows().
 
     import script_test  (after sys.path.insert of the tests directory)
 """
@@ -52,6 +53,14 @@ def table(path):
     with open(path) as f:
         rows = list(csv.reader(f))
     return rows[0], [[float(x) for x in row] for row in rows[1:] if row]
+
+
+def rows(path):
+    """The rows of a CSV table as {column: float} (the check scripts of the
+    prm tests import this module too)."""
+    with open(path) as f:
+        return [{k: float(v) for k, v in row.items()}
+                for row in csv.DictReader(f)]
 
 
 def compare_tables(expected_directory, actual_directory, names, tolerance):

@@ -35,6 +35,10 @@ namespace deepdraw
         "                                     value (options of the same length\n"
         "                                     vary together); study.csv and\n"
         "                                     study.png in the output directory\n"
+        "       deepdraw --flc FILE.prm [--output-directory DIR]\n"
+        "                                     the forming-limit curve of FILE.prm's\n"
+        "                                     subsection Formability: flc.csv and\n"
+        "                                     flc.png in the output directory\n"
         "       deepdraw --write-square-cup-tools DIR [FILE.prm]\n"
         "                                     write the built-in square-cup tools\n"
         "                                     as STEP and IGES files\n"
@@ -83,6 +87,9 @@ namespace deepdraw
     {
       if (!arguments.empty() && arguments[0] == "--write-square-cup-tools")
         return write_square_cup_tools(arguments);
+      if (std::find(arguments.begin(), arguments.end(), "--flc")
+          != arguments.end())
+        return flc_command(arguments);
       if (std::find(arguments.begin(), arguments.end(), "--study")
           != arguments.end())
         return run_study_command(arguments);

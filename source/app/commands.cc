@@ -1,8 +1,10 @@
-// The commands of deepdraw beside a run: --write-square-cup-tools and
-// --study (doc/user_guide.md §1, §4.2, doc/tool_files.md "CAD tools").
+// The commands of deepdraw beside a run: --write-square-cup-tools, --flc
+// and --study (doc/user_guide.md §1, §4.2, §8, doc/tool_files.md "CAD
+// tools").
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deepdraw/app/commands.h>
+#include <deepdraw/app/flc_command.h>
 #include <deepdraw/app/study.h>
 #include <deepdraw/geometry/cad_tool_writer.h>
 #include <deepdraw/geometry/square_cup_tools.h>
@@ -67,6 +69,45 @@ namespace deepdraw
       }
       return 0;
     }
+
+    // --flc FILE.prm [--output-directory DIR], in any order.
+    int
+    flc_command(const std::vector<std::string> &arguments)
+    {
+      std::string prm_file, output_directory;
+      bool        output_directory_given = false;
+      for (std::size_t i = 0; i < arguments.size(); ++i)
+      {
+        const std::string &argument = arguments[i];
+        if (argument == "--flc")
+          continue;
+        if (argument == "--output-directory" && i + 1 < arguments.size()
+            && !arguments[i + 1].empty() && !output_directory_given)
+        {
+          output_directory       = arguments[++i];
+          output_directory_given = true;
+        }
+        else if (!argument.empty() && argument[0] != '-' && prm_file.empty())
+          prm_file = argument;
+        else
+        {
+          std::cerr << "deepdraw: --flc: unknown, repeated or incomplete "
+                       "argument '"
+                    << io::one_line(argument)
+                    << "'; usage: deepdraw --flc FILE.prm "
+                       "[--output-directory DIR]\n";
+          return 1;
+        }
+      }
+      if (prm_file.empty())
+      {
+        std::cerr << "deepdraw: --flc needs a parameter file; usage: deepdraw "
+                     "--flc FILE.prm [--output-directory DIR]\n";
+        return 1;
+      }
+      return run_flc_command(prm_file, output_directory);
+    }
+
 
     // FILE.prm [--output-directory DIR] --study "..." [--study "..."]
     int

@@ -28,16 +28,6 @@ namespace deepdraw
         std::vector<Curve> curves;
       };
 
-      // A gnuplot string in single quotes.
-      std::string
-      quoted(const std::string &text)
-      {
-        std::string result = "'";
-        for (const char c : text)
-          result += c == '\'' ? std::string("''") : std::string(1, c);
-        return result + "'";
-      }
-
       std::vector<Panel>
       panels_of(const StudyPlotSpec &spec)
       {
@@ -105,22 +95,22 @@ namespace deepdraw
            << "set datafile missing NaN\n"
            << "set offsets graph 0.05, graph 0.05, graph 0.1, graph 0.1\n"
            << "set grid\nset key top left\n"
-           << "set xlabel " << quoted(spec.x_label) << "\n"
+           << "set xlabel " << io::gnuplot_string(spec.x_label) << "\n"
            << "ok_value(c) = strcol(" << status
            << ") eq 'ok' ? column(c) : NaN\n"
            << "set multiplot layout " << n_rows << "," << n_columns << " title "
-           << quoted(spec.title) << "\n";
+           << io::gnuplot_string(spec.title) << "\n";
         const std::string x_using = spec.x_numeric ? std::to_string(x) : "0";
         const std::string labels
           = spec.x_numeric ? "" : ":xticlabels(" + std::to_string(x) + ")";
         for (const Panel &panel : panels)
         {
-          gp << "set title " << quoted(panel.title) << "\nplot ";
+          gp << "set title " << io::gnuplot_string(panel.title) << "\nplot ";
           for (unsigned int k = 0; k < panel.curves.size(); ++k)
             gp << (k ? ", \\\n     " : "") << "'study.csv' using " << x_using
                << ":(ok_value(" << column_number(spec, panel.curves[k].column)
                << "))" << labels << " with linespoints pt 7 ps 0.6 title "
-               << quoted(panel.curves[k].title);
+               << io::gnuplot_string(panel.curves[k].title);
           gp << "\n";
         }
         gp << "unset multiplot\n";

@@ -3,23 +3,28 @@
 #include <cstring>
 #include <deepdraw/io/child_process.h>
 #include <deepdraw/io/gnuplot.h>
-#include <fstream>
+#include <deepdraw/io/output_file.h>
 
 namespace deepdraw
 {
   namespace io
   {
     std::string
+    gnuplot_string(const std::string &text)
+    {
+      std::string result;
+      for (const char c : text)
+        result += c == '\'' ? "''" : std::string(1, c);
+      return "'" + result + "'";
+    }
+
+
+    std::string
     plot_with_gnuplot(const std::string &directory,
                       const std::string &name,
                       const std::string &script)
     {
-      {
-        std::ofstream file(directory + "/" + name + ".gp");
-        file << script;
-        if (!file)
-          return "cannot write " + directory + "/" + name + ".gp";
-      }
+      write_file_atomically(directory + "/" + name + ".gp", script);
       const std::string log   = directory + "/" + name + "_gnuplot.log";
       int               error = 0;
       const int         code

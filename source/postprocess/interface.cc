@@ -47,5 +47,24 @@ namespace deepdraw
     }
 
 
+    std::string
+    Interface::summary() const
+    {
+      return "";
+    }
+
+
+    void
+    Interface::set_input_directory(const std::string &directory)
+    {
+      prm_directory = directory;
+    }
+
+
+    const std::string &
+    Interface::input_directory() const
+    {
+      return prm_directory;
+    }
   } // namespace postprocess
 } // namespace deepdraw

@@ -41,7 +41,8 @@ namespace deepdraw
 
 
     void
-    Manager::parse_parameters(ParameterHandler &prm)
+    Manager::parse_parameters(ParameterHandler  &prm,
+                              const std::string &input_directory)
     {
       prm.enter_subsection("Postprocess");
       const std::string list = prm.get("List of postprocessors");
@@ -63,6 +64,7 @@ namespace deepdraw
                            + "' is listed twice");
         names_in_order.push_back(name);
         postprocessors.push_back(plugin->create());
+        postprocessors.back()->set_input_directory(input_directory);
         postprocessors.back()->parse_parameters(prm);
       }
     }
@@ -157,6 +159,27 @@ namespace deepdraw
     Manager::names() const
     {
       return names_in_order;
+    }
+
+
+    const Interface *
+    Manager::find(const std::string &name) const
+    {
+      for (unsigned int k = 0; k < postprocessors.size(); ++k)
+        if (names_in_order[k] == name)
+          return postprocessors[k].get();
+      return nullptr;
+    }
+
+
+    std::vector<std::string>
+    Manager::summaries() const
+    {
+      std::vector<std::string> lines;
+      for (const auto &postprocessor : postprocessors)
+        if (const std::string line = postprocessor->summary(); !line.empty())
+          lines.push_back(line);
+      return lines;
     }
   } // namespace postprocess
 } // namespace deepdraw

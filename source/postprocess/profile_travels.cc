@@ -30,35 +30,30 @@ namespace deepdraw
 
 
     void
-    declare_profile_travels(ParameterHandler &prm)
+    declare_travels(ParameterHandler  &prm,
+                    const std::string &entry,
+                    const std::string &default_value,
+                    const std::string &documentation)
     {
-      prm.enter_subsection("Output");
-      prm.declare_entry("Thickness profile travels",
-                        "15, 20",
+      prm.declare_entry(entry,
+                        default_value,
                         Patterns::List(Patterns::Double(0., 1e6)),
-                        "Final loads (values of t, mm) at which the "
-                        "thickness strain along OX, OY and OD and the "
-                        "earing profile are written "
-                        "(thickness_OX_<travel>mm.csv, ..., "
-                        "earing_<travel>mm.csv; runs with tools "
-                        "only); increments land on them, travels beyond "
-                        "Process/Final load are ignored. Travels must give "
-                        "different file names (10 significant digits).");
-      prm.leave_subsection();
+                        documentation);
     }
 
 
     std::vector<double>
-    parse_profile_travels(ParameterHandler &prm)
+    parse_travels(ParameterHandler  &prm,
+                  const std::string &section,
+                  const std::string &entry,
+                  const std::string &file_prefix)
     {
-      prm.enter_subsection("Output");
       std::vector<double> travels;
       for (const std::string &travel :
-           Utilities::split_string_list(prm.get("Thickness profile travels")))
+           Utilities::split_string_list(prm.get(entry)))
         travels.push_back(Utilities::string_to_double(travel));
-      prm.leave_subsection();
 
-      // Equal travels are one profile; different travels with the same
+      // Equal travels are one file; different travels with the same
       // label would write one file twice (D51).
       std::map<std::string, double> labels;
       for (const double travel : travels)
@@ -67,15 +62,47 @@ namespace deepdraw
         if (!added && it->second != travel)
         {
           std::ostringstream text;
-          text << std::setprecision(17)
-               << "Output/Thickness profile travels: " << it->second << " and "
-               << travel << " both give the file name thickness_OX_"
-               << it->first
+          text << std::setprecision(17) << section << entry << ": "
+               << it->second << " and " << travel << " both give the file name "
+               << file_prefix << it->first
                << "mm.csv; travels must differ in their first "
                   "10 significant digits";
           throw InputError(text.str());
         }
       }
+      return travels;
+    }
+
+
+    void
+    declare_profile_travels(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Output");
+      declare_travels(prm,
+                      "Thickness profile travels",
+                      "15, 20",
+                      "Final loads (values of t, mm) at which the "
+                      "thickness strain along OX, OY and OD and the "
+                      "earing profile are written "
+                      "(thickness_OX_<travel>mm.csv, ..., "
+                      "earing_<travel>mm.csv; runs with tools "
+                      "only); increments land on them, travels beyond "
+                      "Process/Final load are ignored. Travels must give "
+                      "different file names (10 significant digits).");
+      prm.leave_subsection();
+    }
+
+
+    std::vector<double>
+    parse_profile_travels(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Output");
+      const std::vector<double> travels
+        = parse_travels(prm,
+                        "Output/",
+                        "Thickness profile travels",
+                        "thickness_OX_");
+      prm.leave_subsection();
       return travels;
     }
 

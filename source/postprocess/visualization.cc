@@ -169,6 +169,9 @@ namespace deepdraw
                << max_outputs << " (0 writes one per increment)";
           throw InputError(text.str());
         }
+        if (write_vtu)
+          for (const auto &field : fields)
+            field->check(simulation);
       }
 
 

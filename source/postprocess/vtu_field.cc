@@ -41,5 +41,11 @@ namespace deepdraw
     {
       return data;
     }
+
+
+    void
+    VtuField::check(const SimulationAccess &) const
+    {
+    }
   } // namespace postprocess
 } // namespace deepdraw

@@ -139,13 +139,16 @@ namespace deepdraw
 
     void
     ConsoleReport::finished(const postprocess::SimulationAccess &simulation,
-                            const double                         seconds) const
+                            const double                         seconds,
+                            const std::vector<std::string> &summaries) const
     {
       std::cout << "deepdraw: finished at load "
                 << format_load(simulation.state().load) << " after "
                 << simulation.state().increment_number << " increments in "
                 << format_seconds(seconds) << "; results in "
                 << simulation.output_directory() << std::endl;
+      for (const std::string &line : summaries)
+        std::cout << "deepdraw: " << line << std::endl;
     }
   } // namespace problem
 } // namespace deepdraw

@@ -18,7 +18,7 @@ namespace deepdraw
                                    const std::string &input_directory)
     {
       parameters.parse_parameters(prm, input_directory);
-      postprocessors.parse_parameters(prm);
+      postprocessors.parse_parameters(prm, input_directory);
       model = std::make_unique<SheetModel>(prm, parameters, input_directory);
       adaptation
         = std::make_unique<adaptivity::MeshAdaptation>(parameters.adaptivity);

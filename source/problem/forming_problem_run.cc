@@ -87,7 +87,9 @@ namespace deepdraw
         begin_stage(committed.stage + 1);
         console.stage(*view);
       }
-      console.finished(*view, wall_timer.wall_time());
+      console.finished(*view,
+                       wall_timer.wall_time(),
+                       postprocessors.summaries());
     }
 
 

@@ -165,5 +165,12 @@ namespace deepdraw
     {
       return model.model_parameters().output.output_directory;
     }
+
+
+    const postprocess::Interface *
+    SimulationView::find_postprocessor(const std::string &name) const
+    {
+      return postprocessors.find(name);
+    }
   } // namespace problem
 } // namespace deepdraw

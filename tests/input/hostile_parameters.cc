@@ -133,7 +133,22 @@ namespace
        {"Tools/Die/Depth", ""},
        {"Tools/Die/Outer half width", ""},
        {"Tools/Blank holder/Outer half width", ""},
-       {"Tools/Blank holder/Initial gap", "0"}};
+       {"Tools/Blank holder/Initial gap", "0"},
+       // Subsection Formability is parsed only when the post-processor
+       // "forming limits" is listed, which the square cup here does not:
+       // what its Pattern accepts passes --check. The values that the
+       // post-processor refuses (f0 = 0, a thinning limit of 0, ...) are
+       // cases of tests/input/hostile_cases.py, class formability.
+       {"Formability/Safety band", "0"},
+       {"Formability/Thinning limit", "-1 0"},
+       {"Formability/Insufficient stretch strain", "0"},
+       {"Formability/Wrinkling minor strain", "0"},
+       {"Formability/FLD travels", "0"},
+       {"Formability/Marciniak-Kuczynski/Imperfection f0", "0"},
+       {"Formability/Marciniak-Kuczynski/Groove angle step", "0"},
+       {"Formability/Marciniak-Kuczynski/Strain increment", "0"},
+       {"Formability/Marciniak-Kuczynski/Localisation factor", ""},
+       {"Formability/Marciniak-Kuczynski/Strain ratio step", "0"}};
 
   // Values beyond the five above that a bound or a check across entries
   // must catch (D50, D53): path, value, a part of the message.

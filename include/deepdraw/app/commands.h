@@ -17,6 +17,12 @@ namespace deepdraw
     int
     write_square_cup_tools(const std::vector<std::string> &arguments);
 
+    // --flc FILE.prm [--output-directory DIR]: the forming-limit curve of
+    // the prm's subsection Formability as flc.csv and flc.png
+    // (app::run_flc_command).
+    int
+    flc_command(const std::vector<std::string> &arguments);
+
     // FILE.prm [--output-directory DIR] --study "..." [--study "..."]: a
     // refinement study (app::run_study).
     int

@@ -64,6 +64,23 @@ namespace deepdraw
       save(std::ostream &stream) const;
       virtual void
       load(std::istream &stream);
+
+      // A line for the end of the run (ConsoleReport::finished, also with
+      // --quiet), or nothing (the default).
+      virtual std::string
+      summary() const;
+
+      // The directory of the prm file, set by the Manager before
+      // parse_parameters: file names in parameters are relative to it.
+      void
+      set_input_directory(const std::string &directory);
+
+    protected:
+      const std::string &
+      input_directory() const;
+
+    private:
+      std::string prm_directory = ".";
     };
 
     using PostprocessorRegistry = PluginRegistry<Interface>;

@@ -22,9 +22,11 @@ namespace deepdraw
     public:
       static void
       declare_parameters(ParameterHandler &prm);
-      // Throws InputError naming the parameter.
+      // Throws InputError naming the parameter. File names in parameters
+      // are relative to input_directory (the prm file's).
       void
-      parse_parameters(ParameterHandler &prm);
+      parse_parameters(ParameterHandler  &prm,
+                       const std::string &input_directory = ".");
 
       // Interface::initialize of each (after the set-up and after every
       // mesh change).
@@ -54,6 +56,12 @@ namespace deepdraw
       // The names of the post-processors of this run, in order.
       const std::vector<std::string> &
       names() const;
+      // The one of this run with that name; nullptr if it is not listed.
+      const Interface *
+      find(const std::string &name) const;
+      // Their summary lines (Interface::summary), the empty ones left out.
+      std::vector<std::string>
+      summaries() const;
 
     private:
       std::vector<std::string>                names_in_order;

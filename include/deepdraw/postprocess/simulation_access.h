@@ -23,6 +23,8 @@ namespace deepdraw
   {
     using namespace dealii;
 
+    class Interface;
+
     // The figures of the last converged increment (statistics.csv).
     struct IncrementReport
     {
@@ -109,6 +111,12 @@ namespace deepdraw
       output_time() const = 0;
       virtual const std::string &
       output_directory() const = 0;
+
+      // The post-processor of this run listed under name (in Postprocess/
+      // List of postprocessors), nullptr if it is not listed: a VTU field
+      // reads the results of one this way (D141).
+      virtual const Interface *
+      find_postprocessor(const std::string &name) const = 0;
     };
   } // namespace postprocess
 } // namespace deepdraw

@@ -61,6 +61,12 @@ namespace deepdraw
       {
       }
 
+      // Before anything is written (the post-processor "visualization"'s
+      // initialize): InputError if the field cannot be computed in this
+      // run, naming the parameter. By default nothing.
+      virtual void
+      check(const SimulationAccess &simulation) const;
+
       // Adds its field(s), computed on the state of the last converged
       // increment.
       virtual void

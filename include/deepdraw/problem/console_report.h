@@ -7,6 +7,7 @@
 #include <deal.II/base/timer.h>
 #include <deepdraw/postprocess/simulation_access.h>
 #include <string>
+#include <vector>
 
 namespace deepdraw
 {
@@ -39,10 +40,11 @@ namespace deepdraw
                 unsigned int                         cut_backs) const;
       void
       refined(unsigned int cells, unsigned int iterations) const;
-      // Always printed.
+      // Always printed, with the post-processors' summary lines after it.
       void
       finished(const postprocess::SimulationAccess &simulation,
-               double                               seconds) const;
+               double                               seconds,
+               const std::vector<std::string>      &summaries) const;
 
     private:
       bool          quiet;

@@ -85,6 +85,8 @@ namespace deepdraw
       output_time() const override;
       const std::string &
       output_directory() const override;
+      const postprocess::Interface *
+      find_postprocessor(const std::string &name) const override;
 
     private:
       const SheetModel           &model;
