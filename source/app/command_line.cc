@@ -150,6 +150,9 @@ namespace deepdraw
           = slash == std::string::npos ? "." : prm_file.substr(0, slash);
         forming_problem
           = std::make_unique<problem::FormingProblem>(prm, input_directory);
+        // --check --resume: the checkpoint too, as the resume would (D160).
+        if (check_only && options.resume)
+          forming_problem->check_resume();
       }
       catch (const InputError &error)
       {
@@ -175,7 +178,10 @@ namespace deepdraw
       if (check_only)
       {
         std::cout << "deepdraw: " << io::one_line(prm_file)
-                  << ": the input is valid" << std::endl;
+                  << (options.resume
+                        ? ": the input and the checkpoint are valid"
+                        : ": the input is valid")
+                  << std::endl;
         return 0;
       }
 

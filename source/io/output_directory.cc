@@ -31,5 +31,13 @@ namespace deepdraw
                          + "': " + error.what());
       }
     }
+
+    bool
+    is_plain_file_name(const std::string &name)
+    {
+      return !name.empty() && name != "." && name != ".."
+             && name.find_first_of(std::string("/\\\0", 3))
+                  == std::string::npos;
+    }
   } // namespace io
 } // namespace deepdraw

@@ -36,7 +36,7 @@ namespace deepdraw
     FormingProblem::start_run(const RunOptions &options)
     {
       if (options.resume)
-        restore_checkpoint();
+        restore_checkpoint(true);
       else if (const unsigned int penetrating = model->place_tools();
                penetrating > 0 && !options.quiet)
         std::cout << "deepdraw: " << penetrating

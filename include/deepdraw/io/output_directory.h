@@ -18,6 +18,12 @@ namespace deepdraw
     open_output_directory(const std::string           &directory,
                           const std::string           &parameter,
                           const std::function<void()> &open);
+
+    // Whether name is a plain file name, one that stays in the directory
+    // it is taken relative to: not empty, no '/', '\\' or NUL, not "." or
+    // "..".
+    bool
+    is_plain_file_name(const std::string &name);
   } // namespace io
 } // namespace deepdraw
 
