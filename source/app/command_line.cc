@@ -46,7 +46,8 @@ namespace deepdraw
         "(solution.pvd + VTU for ParaView, CSV tables) to the output directory.\n"
         "  --resume   continue from the checkpoint in the output directory\n"
         "  --quiet    print only the summary, not a line per increment\n"
-        "SIGINT or SIGTERM stop after the current increment with a checkpoint.\n"
+        "SIGINT, SIGTERM, SIGHUP or SIGQUIT stop after the current increment with a\n"
+        "checkpoint.\n"
         "Exit codes: 0 done, 1 bad command line, 2 bad input, 3 the run could not\n"
         "be completed (results of the converged increments are kept).\n";
       // clang-format on
@@ -186,7 +187,8 @@ namespace deepdraw
       }
 
       // The run: a failure after the output has started is exit code 3;
-      // SIGINT and SIGTERM stop it cleanly with a checkpoint (D55).
+      // SIGINT, SIGTERM, SIGHUP and SIGQUIT stop it cleanly with a
+      // checkpoint (D55, D163).
       state::install_stop_handlers();
       try
       {

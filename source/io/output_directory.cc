@@ -10,9 +10,10 @@ namespace deepdraw
     void
     open_output_directory(const std::string           &directory,
                           const std::string           &parameter,
-                          const std::function<void()> &open)
+                          const std::function<void()> &open,
+                          const bool                   made_for_run)
     {
-      const bool existed = std::filesystem::exists(directory);
+      const bool existed = !made_for_run && std::filesystem::exists(directory);
       try
       {
         std::filesystem::create_directories(directory);
@@ -31,6 +32,7 @@ namespace deepdraw
                          + "': " + error.what());
       }
     }
+
 
     bool
     is_plain_file_name(const std::string &name)

@@ -8,6 +8,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 #include <deepdraw/adaptivity/mesh_adaptation.h>
+#include <deepdraw/io/output_lock.h>
 #include <deepdraw/postprocess/manager.h>
 #include <deepdraw/problem/console_report.h>
 #include <deepdraw/problem/increment_solver.h>
@@ -134,7 +135,10 @@ namespace deepdraw
       // names each: tool, outline and mesh files.
       std::vector<std::pair<std::string, std::string>>
       input_file_names() const;
-
+      // The output directory made if it is missing (not on a resume) and
+      // locked for this run (D162).
+      void
+      lock_output_directory(const RunOptions &options);
       // Adaptive refinement after a converged increment (D80): false if
       // the re-equilibration failed (reason says why).
       bool
@@ -157,6 +161,10 @@ namespace deepdraw
       std::vector<std::pair<std::string, std::uintmax_t>> table_sizes;
       // The digests of the input files when the run began (D161).
       std::vector<state::InputFile> input_files;
+      // The run's hold on its output directory, and whether the directory
+      // was made for it.
+      io::OutputLock output_lock;
+      bool           made_output_directory = false;
     };
   } // namespace problem
 } // namespace deepdraw
