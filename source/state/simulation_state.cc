@@ -303,14 +303,15 @@ namespace deepdraw
     void
     SimulationState::read(std::istream &stream)
     {
-      char read_tag[sizeof(tag)] = {};
-      stream.read(read_tag, sizeof(tag));
-      const bool with_release = stream && std::string(read_tag) == tag;
-      const bool with_stages
-        = with_release
-          || (stream && std::string(read_tag) == tag_before_release);
-      if (!with_stages
-          && (!stream || std::string(read_tag) != tag_without_stages))
+      // The tag's bytes as read, its final NUL included: a damaged tag
+      // need not end in one (found by fuzz/checkpoint_fuzzer.cc).
+      std::string read_tag(sizeof(tag), '\0');
+      stream.read(read_tag.data(), sizeof(tag));
+      const auto is = [&](const char(&expected)[sizeof(tag)])
+      { return stream && read_tag == std::string(expected, sizeof(tag)); };
+      const bool with_release = is(tag);
+      const bool with_stages  = with_release || is(tag_before_release);
+      if (!with_stages && !is(tag_without_stages))
         throw std::runtime_error("simulation state: not a deepdraw state");
       read_increment(stream, *this);
       std::size_t n = get_count(stream, sizeof(double), "vertices");
