@@ -199,7 +199,8 @@ namespace deepdraw
                         "Converged increments between checkpoints "
                         "(checkpoint.bin in the output directory, resumed "
                         "with --resume); 0 writes one only at a clean stop "
-                        "(SIGINT, SIGTERM, a failed increment).");
+                        "(SIGINT, SIGTERM, SIGHUP, SIGQUIT, a failed "
+                        "increment).");
       prm.leave_subsection();
     }
 
