@@ -324,7 +324,7 @@ namespace deepdraw
       std::ifstream   stream;
       if (std::filesystem::is_regular_file(status))
         stream.open(filename, std::ios::binary);
-      if (!stream)
+      if (!stream.is_open() || !stream)
         throw InputError("--resume: there is no checkpoint " + filename
                          + " (checkpoints are written every Checkpoint/"
                            "Interval increments, at the end of every stage "
