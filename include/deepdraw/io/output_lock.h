@@ -1,9 +1,10 @@
 // One output folder, one run (doc/user_guide.md §6, doc/decisions.md
-// D162): a run holds the lock file .deepdraw.lock in its output directory,
-// with its process id and host, from before it writes or cuts back
-// anything until it ends. The lock is an flock() on that file, so it ends
-// with the process however it ends (SIGKILL included); a lock file left
-// behind by a process that is gone is stale and taken over.
+// D162): a run holds the lock file .deepdraw.lock in its output directory
+// from before it writes or cuts back anything until it ends. The lock is an
+// flock() on that file, so it ends with the process however it ends
+// (SIGKILL included); the holder's process id comes from the kernel's lock
+// table, and the file stays empty (a lock costs no block of a nearly full
+// disk). A lock file nobody holds is stale and taken over.
 #ifndef deepdraw_io_output_lock_h
 #define deepdraw_io_output_lock_h
 
@@ -25,10 +26,10 @@ namespace deepdraw
       ~OutputLock();
 
       // Takes the lock of `directory` (which must exist). Throws InputError
-      // "parameter: DIR is in use by deepdraw process PID on HOST ..." if
-      // a living process holds it, and std::runtime_error if the lock file
+      // "parameter: 'DIR' is in use by deepdraw process PID ..." if a
+      // living process holds it, and std::runtime_error if the lock file
       // cannot be made. A stale lock file is taken over, with a line on
-      // stdout unless quiet.
+      // stdout unless quiet; so is a file system without locks.
       void
       acquire(const std::string &directory,
               const std::string &parameter,
