@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
-# Bounded fuzzing of the tool-file reader and of the prm reading path
-# (fuzz/*.cc, doc/decisions.md D54): libFuzzer with the address and
-# undefined-behaviour sanitizers, clang 14. Not part of ctest.
+# Bounded fuzzing of the tool-file reader, of the prm reading path and of
+# the checkpoint reader (fuzz/*.cc, doc/decisions.md D54, D160): libFuzzer
+# with the address and undefined-behaviour sanitizers, clang 14. Not part
+# of ctest.
 #
-#   scripts/fuzz.sh [SECONDS_PER_TARGET]     (default 120)
+#   scripts/fuzz.sh [SECONDS_PER_TARGET [TARGET ...]]   (default 120, all)
 #
+# TARGET: tool_file_fuzzer, prm_fuzzer, checkpoint_fuzzer (the last builds
+# from the checkpoint reader's own sources only, in a minute).
 # Installs clang-14 and libclang-rt-14-dev if missing (apt-get, as
 # scripts/setup.sh does), configures and builds build-fuzz/
 # (-DDEEPDRAW_FUZZ=ON), seeds each target's corpus with the repository's
@@ -16,6 +19,9 @@
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 seconds="${1:-120}"
+shift || true
+targets=("$@")
+[ ${#targets[@]} -eq 0 ] && targets=(tool_file_fuzzer prm_fuzzer checkpoint_fuzzer)
 cd "$root"
 
 packages=(clang-14 libclang-rt-14-dev cmake make)
@@ -36,7 +42,7 @@ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++
       -DDEEPDRAW_FUZZ=ON > build-fuzz.log.tmp 2>&1 \
   || { cat build-fuzz.log.tmp; rm -f build-fuzz.log.tmp; exit 1; }
 rm -f build-fuzz.log.tmp
-cmake --build build-fuzz -j "$(nproc)" --target tool_file_fuzzer prm_fuzzer
+cmake --build build-fuzz -j "$(nproc)" --target "${targets[@]}"
 
 # deal.II and muparser are not instrumented; their allocations at exit are
 # not leaks of an input.
@@ -44,11 +50,19 @@ export ASAN_OPTIONS="detect_leaks=0:abort_on_error=1:symbolize=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 
 status=0
-for target in tool_file_fuzzer prm_fuzzer; do
+for target in "${targets[@]}"; do
   work="build-fuzz/fuzz-work/$target"
   mkdir -p "$work/corpus"
+  max_len=8192
   if [ "$target" = tool_file_fuzzer ]; then
     find tests -name '*.tool' -exec cp {} "$work/corpus/" \;
+  elif [ "$target" = checkpoint_fuzzer ]; then
+    # A checkpoint of each format: fuzz/seeds (format 4, a 2 x 1 x 1 bar)
+    # and the format-1 one of tests/restart/data.
+    cp fuzz/seeds/checkpoint_format_4.bin "$work/corpus/"
+    cp tests/restart/data/checkpoint_format_1/output/checkpoint.bin \
+       "$work/corpus/checkpoint_format_1.bin"
+    max_len=$(( $(wc -c < fuzz/seeds/checkpoint_format_4.bin) * 2 ))
   else
     find prm tests -name '*.prm' -exec cp {} "$work/corpus/" \;
     # Seeds include prm/*.prm and name tool files in data/.
@@ -58,7 +72,7 @@ for target in tool_file_fuzzer prm_fuzzer; do
   echo "fuzz: $target for $seconds s ($(ls "$work/corpus" | wc -l) inputs in the corpus)"
   set +e
   (cd "$work" && "$root/build-fuzz/fuzz/$target" -max_total_time="$seconds" \
-       -timeout=30 -rss_limit_mb=4096 -max_len=8192 -print_final_stats=1 \
+       -timeout=30 -rss_limit_mb=4096 -max_len="$max_len" -print_final_stats=1 \
        corpus > fuzz.log 2>&1)
   code=$?
   set -e

@@ -50,7 +50,8 @@ namespace deepdraw
         "(solution.pvd + VTU for ParaView, CSV tables) to the output directory.\n"
         "  --resume   continue from the checkpoint in the output directory\n"
         "  --quiet    print only the summary, not a line per increment\n"
-        "SIGINT or SIGTERM stop after the current increment with a checkpoint.\n"
+        "SIGINT, SIGTERM, SIGHUP or SIGQUIT stop after the current increment with a\n"
+        "checkpoint.\n"
         "Exit codes: 0 done, 1 bad command line, 2 bad input, 3 the run could not\n"
         "be completed (results of the converged increments are kept).\n";
       // clang-format on
@@ -157,6 +158,9 @@ namespace deepdraw
           = slash == std::string::npos ? "." : prm_file.substr(0, slash);
         forming_problem
           = std::make_unique<problem::FormingProblem>(prm, input_directory);
+        // --check --resume: the checkpoint too, as the resume would (D160).
+        if (check_only && options.resume)
+          forming_problem->check_resume();
       }
       catch (const InputError &error)
       {
@@ -182,12 +186,16 @@ namespace deepdraw
       if (check_only)
       {
         std::cout << "deepdraw: " << io::one_line(prm_file)
-                  << ": the input is valid" << std::endl;
+                  << (options.resume
+                        ? ": the input and the checkpoint are valid"
+                        : ": the input is valid")
+                  << std::endl;
         return 0;
       }
 
       // The run: a failure after the output has started is exit code 3;
-      // SIGINT and SIGTERM stop it cleanly with a checkpoint (D55).
+      // SIGINT, SIGTERM, SIGHUP and SIGQUIT stop it cleanly with a
+      // checkpoint (D55, D163).
       state::install_stop_handlers();
       try
       {

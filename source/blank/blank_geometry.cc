@@ -169,7 +169,10 @@ namespace deepdraw
         shape = BlankOutline::circle(diameter);
       }
       else
-        shape = BlankOutline::read(resolve(outline_file, "Outline file"));
+      {
+        outline_file = resolve(outline_file, "Outline file");
+        shape        = BlankOutline::read(outline_file);
+      }
       // The modelled part's extents (the scales of D50 and the check of
       // prescribed displacements): the largest radius along each axis.
       const double r = shape.max_radius();

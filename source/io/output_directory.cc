@@ -10,9 +10,10 @@ namespace deepdraw
     void
     open_output_directory(const std::string           &directory,
                           const std::string           &parameter,
-                          const std::function<void()> &open)
+                          const std::function<void()> &open,
+                          const bool                   made_for_run)
     {
-      const bool existed = std::filesystem::exists(directory);
+      const bool existed = !made_for_run && std::filesystem::exists(directory);
       try
       {
         std::filesystem::create_directories(directory);
@@ -30,6 +31,15 @@ namespace deepdraw
         throw InputError(parameter + ": cannot write results to '" + directory
                          + "': " + error.what());
       }
+    }
+
+
+    bool
+    is_plain_file_name(const std::string &name)
+    {
+      return !name.empty() && name != "." && name != ".."
+             && name.find_first_of(std::string("/\\\0", 3))
+                  == std::string::npos;
     }
   } // namespace io
 } // namespace deepdraw

@@ -1,6 +1,9 @@
+#include <cmath>
 #include <deepdraw/io/binary_stream.h>
+#include <deepdraw/io/output_directory.h>
 #include <deepdraw/io/output_error.h>
 #include <deepdraw/io/output_file.h>
+#include <deepdraw/io/printable_text.h>
 #include <deepdraw/io/pvd_record.h>
 #include <iomanip>
 #include <sstream>
@@ -66,15 +69,26 @@ namespace deepdraw
     std::vector<PvdRecord::Entry>
     read_entries(std::istream &stream, const std::string &source)
     {
-      std::size_t n = 0;
-      read_value(stream, n, source);
+      // A count bounded by the bytes left, a finite time and a plain file
+      // name (the VTU files are in the PVD file's directory).
+      const std::size_t n
+        = read_count(stream,
+                     sizeof(double) + sizeof(unsigned) + sizeof(std::size_t),
+                     source,
+                     "PVD steps");
       std::vector<PvdRecord::Entry> entries;
-      for (std::size_t i = 0; i < n && stream; ++i)
+      for (std::size_t i = 0; i < n; ++i)
       {
         PvdRecord::Entry entry;
         read_value(stream, entry.time, source);
         read_value(stream, entry.part, source);
         entry.file = read_string(stream, source);
+        if (!std::isfinite(entry.time) || !is_plain_file_name(entry.file))
+          throw std::runtime_error("PVD steps: a step at time "
+                                   + std::to_string(entry.time) + " of '"
+                                   + one_line(entry.file)
+                                   + "' (a finite time and a plain file "
+                                     "name are needed)");
         entries.push_back(entry);
       }
       return entries;

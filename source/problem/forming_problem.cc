@@ -1,6 +1,7 @@
 // FormingProblem: its construction, what tests and benchmarks call
 // directly, and its checkpoints. The run is in forming_problem_run.cc, one
 // increment in increment_solver.cc.
+#include <deepdraw/io/input_error.h>
 #include <deepdraw/problem/forming_problem.h>
 
 namespace deepdraw
@@ -26,6 +27,25 @@ namespace deepdraw
         = std::make_unique<SimulationView>(*model, run_record, postprocessors);
       increments = std::make_unique<IncrementSolver>(*model, parameters.newton);
       postprocessors.initialize(*view);
+      input_files = state::digest_input_files(input_file_names());
+    }
+
+
+    std::vector<std::pair<std::string, std::string>>
+    FormingProblem::input_file_names() const
+    {
+      std::vector<std::pair<std::string, std::string>> files;
+      using Outline = blank::BlankGeometry::Outline;
+      if (parameters.geometry.outline == Outline::polygon)
+        files.emplace_back("Geometry/Outline file",
+                           parameters.geometry.outline_file);
+      if (parameters.geometry.outline == Outline::gmsh)
+        files.emplace_back("Geometry/Mesh file", parameters.geometry.mesh_file);
+      for (const contact::ToolDefinition &tool :
+           model->contact().tool_definitions())
+        if (tool.geometry == "file" || tool.geometry == "cad")
+          files.emplace_back(tool.parameter_prefix + "File", tool.file);
+      return files;
     }
 
 
@@ -61,6 +81,7 @@ namespace deepdraw
       checkpoint.state          = model->state();
       checkpoint.table_sizes    = table_sizes;
       checkpoint.postprocessors = postprocessors.save();
+      checkpoint.input_files    = input_files;
       state::write_checkpoint(state::checkpoint_file(
                                 parameters.output.output_directory),
                               checkpoint);
@@ -68,21 +89,50 @@ namespace deepdraw
 
 
     void
-    FormingProblem::restore_checkpoint()
+    FormingProblem::restore_checkpoint(const bool cut_tables)
     {
       const std::string &directory  = parameters.output.output_directory;
       const std::string  filename   = state::checkpoint_file(directory);
       state::Checkpoint  checkpoint = state::read_checkpoint(filename);
+      std::vector<state::StageRange> ranges;
+      for (const process::Stage &stage : parameters.stages)
+        ranges.push_back({stage.start_load,
+                          stage.end_load,
+                          stage.load_stepping.maximum_increment});
       state::check_resumable(checkpoint,
                              filename,
                              parameters.listing,
                              parameters.default_listing,
-                             parameters.stages.size());
-      model->restore(std::move(checkpoint.state));
-      increments->reset_unknowns();
-      postprocessors.initialize(*view);
-      state::truncate_tables(directory, checkpoint.table_sizes);
-      postprocessors.load(checkpoint.postprocessors);
+                             ranges,
+                             input_files);
+      try
+      {
+        model->restore(std::move(checkpoint.state));
+        increments->reset_unknowns();
+        postprocessors.initialize(*view);
+        postprocessors.load(checkpoint.postprocessors);
+      }
+      catch (const std::runtime_error &error)
+      {
+        // InputError of the model's sizes, or a post-processor's data that
+        // is not its own.
+        std::string what = error.what();
+        if (what.rfind("--resume: ", 0) == 0)
+          what = what.substr(10);
+        throw InputError("--resume: " + filename
+                         + " does not fit this model: " + what);
+      }
+      // Every check made, the output directory is touched only now.
+      state::check_tables(directory, checkpoint.table_sizes);
+      if (cut_tables)
+        state::truncate_tables(directory, checkpoint.table_sizes);
+    }
+
+
+    void
+    FormingProblem::check_resume()
+    {
+      restore_checkpoint(false);
     }
   } // namespace problem
 } // namespace deepdraw

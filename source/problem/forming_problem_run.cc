@@ -11,6 +11,7 @@
 #include <deepdraw/problem/forming_problem.h>
 #include <deepdraw/state/checkpoint.h>
 #include <deepdraw/state/stop_request.h>
+#include <filesystem>
 #include <iostream>
 
 namespace deepdraw
@@ -33,16 +34,65 @@ namespace deepdraw
 
 
     void
+    FormingProblem::lock_output_directory(const RunOptions &options)
+    {
+      // A resume needs its checkpoint: a missing directory is reported by
+      // restore_checkpoint, and not made.
+      const std::string &directory = parameters.output.output_directory;
+      std::error_code    error;
+      if (options.resume && !std::filesystem::is_directory(directory, error))
+        return;
+      try
+      {
+        made_output_directory = !std::filesystem::exists(directory);
+        std::filesystem::create_directories(directory);
+        output_lock.acquire(directory,
+                            "Output/Output directory",
+                            options.quiet);
+      }
+      catch (const InputError &)
+      {
+        throw;
+      }
+      catch (const std::exception &failure)
+      {
+        if (made_output_directory)
+          std::filesystem::remove_all(directory, error);
+        throw InputError("Output/Output directory: cannot write results to '"
+                         + directory + "': " + failure.what());
+      }
+    }
+
+
+    void
     FormingProblem::start_run(const RunOptions &options)
     {
-      if (options.resume)
-        restore_checkpoint();
-      else if (const unsigned int penetrating = model->place_tools();
-               penetrating > 0 && !options.quiet)
-        std::cout << "deepdraw: " << penetrating
-                  << " sheet nodes start inside a tool; the first "
-                     "increment pushes them out"
-                  << std::endl;
+      // Before anything in the output directory is written or cut back.
+      lock_output_directory(options);
+      try
+      {
+        if (options.resume)
+          restore_checkpoint(true);
+        else if (const unsigned int penetrating = model->place_tools();
+                 penetrating > 0 && !options.quiet)
+          std::cout << "deepdraw: " << penetrating
+                    << " sheet nodes start inside a tool; the first "
+                       "increment pushes them out"
+                    << std::endl;
+      }
+      catch (...)
+      {
+        // Nothing is written on an input error: a directory made for the
+        // run goes again.
+        if (made_output_directory)
+        {
+          output_lock.release();
+          std::error_code ignored;
+          std::filesystem::remove_all(parameters.output.output_directory,
+                                      ignored);
+        }
+        throw;
+      }
       open_outputs(options.resume);
       if (!options.resume)
         postprocessors.execute(*view);
@@ -61,7 +111,8 @@ namespace deepdraw
           postprocessors.start(*view, resume);
           increments->open_log(parameters.output.output_directory, resume);
           adaptation->open(parameters.output.output_directory, resume);
-        });
+        },
+        made_output_directory);
     }
 
 

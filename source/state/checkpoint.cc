@@ -1,7 +1,10 @@
 #include <algorithm>
 #include <cstdlib>
 #include <deepdraw/io/binary_stream.h>
+#include <deepdraw/io/checksum.h>
 #include <deepdraw/io/input_error.h>
+#include <deepdraw/io/output_directory.h>
+#include <deepdraw/io/printable_text.h>
 #include <deepdraw/io/pvd_record.h>
 #include <deepdraw/state/checkpoint.h>
 #include <filesystem>
@@ -15,16 +18,23 @@ namespace deepdraw
   {
     namespace
     {
-      constexpr char tag[] = "deepdraw-checkpoint-3";
+      // Format 4 (D160): the layout of format 3, the input files' digests
+      // after the post-processors' data, and the CRC-32 of every byte
+      // before it (the tag included) as the file's last 4 bytes.
+      constexpr char tag[] = "deepdraw-checkpoint-4";
+      // Before input digests and the checksum (D160).
+      constexpr char tag_before_checksum[] = "deepdraw-checkpoint-3";
       // Before releases (D150): the same layout, its state of format 4
       // (SimulationState::read tells them apart).
       constexpr char tag_before_release[] = "deepdraw-checkpoint-2";
-      static_assert(sizeof(tag) == sizeof(tag_before_release));
       // Before stages and post-processors (D101): the output progress was
       // the VTU counter and the PVD steps, now the "visualization"
       // post-processor's data, then the table sizes.
       constexpr char tag_before_stages[] = "deepdraw-checkpoint-1";
+      static_assert(sizeof(tag) == sizeof(tag_before_checksum));
+      static_assert(sizeof(tag) == sizeof(tag_before_release));
       static_assert(sizeof(tag) == sizeof(tag_before_stages));
+      constexpr std::size_t checksum_size = sizeof(std::uint32_t);
 
       constexpr char source[] = "the file";
 
@@ -55,17 +65,27 @@ namespace deepdraw
         }
       }
 
+      // A table name must be a plain *.csv name: a resume cuts these files
+      // back, and only in the output directory.
       std::vector<std::pair<std::string, std::uintmax_t>>
       read_table_sizes(std::istream &stream)
       {
         std::vector<std::pair<std::string, std::uintmax_t>> sizes;
-        std::size_t                                         n = 0;
-        get(stream, n);
-        for (std::size_t i = 0; i < n && stream; ++i)
+        const std::size_t n = io::read_count(stream,
+                                             2 * sizeof(std::size_t),
+                                             source,
+                                             "table sizes");
+        for (std::size_t i = 0; i < n; ++i)
         {
           std::string    name = io::read_string(stream, source);
           std::uintmax_t size = 0;
           get(stream, size);
+          const std::string printed = io::one_line(name);
+          if (!io::is_plain_file_name(name) || name.size() < 5
+              || name.compare(name.size() - 4, 4, ".csv") != 0)
+            throw std::runtime_error("table name '" + printed
+                                     + "' is not a plain *.csv file name "
+                                       "in the output directory");
           sizes.emplace_back(name, size);
         }
         return sizes;
@@ -88,36 +108,73 @@ namespace deepdraw
         checkpoint.table_sizes                     = read_table_sizes(stream);
       }
 
-      // "Subsection/Name" -> value, from a flatten_parameters() listing.
-      std::map<std::string, std::string>
-      parse_listing(const std::string &listing)
+      void
+      read_postprocessors(std::istream &stream, Checkpoint &checkpoint)
       {
-        std::map<std::string, std::string> values;
-        std::istringstream                 lines(listing);
-        std::string                        line;
-        while (std::getline(lines, line))
+        const std::size_t n = io::read_count(stream,
+                                             2 * sizeof(std::size_t),
+                                             source,
+                                             "post-processors");
+        for (std::size_t i = 0; i < n; ++i)
         {
-          const auto separator = line.find(" = ");
-          if (separator != std::string::npos)
-            values[line.substr(0, separator)] = line.substr(separator + 3);
+          const std::string name          = io::read_string(stream, source);
+          checkpoint.postprocessors[name] = io::read_string(stream, source);
         }
-        return values;
       }
 
-      // Parameters a resumed run may change (D55), and those of the stages
-      // after the checkpoint's (D101).
-      bool
-      may_change_on_resume(const std::string &name, const unsigned int stage)
+      void
+      write_input_files(std::ostream                 &stream,
+                        const std::vector<InputFile> &files)
       {
-        const std::string stage_slot = "Process/Stage ";
-        if (name.rfind(stage_slot, 0) == 0
-            && std::atoi(name.c_str() + stage_slot.size()) > int(stage) + 1)
-          return true;
-        return name.rfind("Output/", 0) == 0
-               || name.rfind("Checkpoint/", 0) == 0
-               || name == "Process/Final load"
-               || name == "Load stepping/Minimum increment"
-               || name == "Load stepping/Maximum cut-backs";
+        put(stream, files.size());
+        for (const InputFile &file : files)
+        {
+          io::write_string(stream, file.parameter);
+          io::write_string(stream, file.path);
+          put(stream, file.digest.size);
+          put(stream, file.digest.crc);
+        }
+      }
+
+      std::vector<InputFile>
+      read_input_files(std::istream &stream)
+      {
+        const std::size_t n
+          = io::read_count(stream,
+                           2 * sizeof(std::size_t) + sizeof(std::uint64_t)
+                             + sizeof(std::uint32_t),
+                           source,
+                           "input files");
+        std::vector<InputFile> files(n);
+        for (InputFile &file : files)
+        {
+          file.parameter = io::read_string(stream, source);
+          file.path      = io::read_string(stream, source);
+          get(stream, file.digest.size);
+          get(stream, file.digest.crc);
+        }
+        return files;
+      }
+
+      // The fields after the tag, as the tag's format has them.
+      void
+      read_fields(std::istream      &stream,
+                  const std::string &read_tag,
+                  Checkpoint        &checkpoint)
+      {
+        checkpoint.parameters = io::read_string(stream, source);
+        checkpoint.state.read(stream);
+        if (read_tag == tag_before_stages)
+          read_output_progress(stream, checkpoint);
+        else
+        {
+          checkpoint.table_sizes = read_table_sizes(stream);
+          read_postprocessors(stream, checkpoint);
+        }
+        if (read_tag == tag)
+          checkpoint.input_files = read_input_files(stream);
+        if (stream.peek() != std::char_traits<char>::eof())
+          throw std::runtime_error("bytes after the last field");
       }
 
       std::string
@@ -142,7 +199,8 @@ namespace deepdraw
                         "Converged increments between checkpoints "
                         "(checkpoint.bin in the output directory, resumed "
                         "with --resume); 0 writes one only at a clean stop "
-                        "(SIGINT, SIGTERM, a failed increment).");
+                        "(SIGINT, SIGTERM, SIGHUP, SIGQUIT, a failed "
+                        "increment).");
       prm.leave_subsection();
     }
 
@@ -163,25 +221,40 @@ namespace deepdraw
     }
 
 
+    std::string
+    checkpoint_image(const Checkpoint &checkpoint)
+    {
+      std::ostringstream stream(std::ios::binary);
+      stream.write(tag, sizeof(tag));
+      io::write_string(stream, checkpoint.parameters);
+      checkpoint.state.write(stream);
+      write_table_sizes(stream, checkpoint.table_sizes);
+      put(stream, checkpoint.postprocessors.size());
+      for (const auto &[name, data] : checkpoint.postprocessors)
+      {
+        io::write_string(stream, name);
+        io::write_string(stream, data);
+      }
+      write_input_files(stream, checkpoint.input_files);
+      std::string         image = stream.str();
+      const std::uint32_t crc   = io::crc32(image.data(), image.size());
+      image.append(reinterpret_cast<const char *>(&crc), sizeof(crc));
+      return image;
+    }
+
+
     void
     write_checkpoint(const std::string &filename, const Checkpoint &checkpoint)
     {
+      const std::string image     = checkpoint_image(checkpoint);
       const std::string temporary = filename + ".tmp";
       {
         std::ofstream stream(temporary, std::ios::binary);
-        stream.write(tag, sizeof(tag));
-        io::write_string(stream, checkpoint.parameters);
-        checkpoint.state.write(stream);
-        write_table_sizes(stream, checkpoint.table_sizes);
-        put(stream, checkpoint.postprocessors.size());
-        for (const auto &[name, data] : checkpoint.postprocessors)
-        {
-          io::write_string(stream, name);
-          io::write_string(stream, data);
-        }
+        stream.write(image.data(), image.size());
         stream.flush();
         if (!stream)
         {
+          stream.close();
           std::filesystem::remove(temporary);
           throw std::runtime_error("cannot write the checkpoint " + temporary);
         }
@@ -189,54 +262,76 @@ namespace deepdraw
       std::error_code error;
       std::filesystem::rename(temporary, filename, error);
       if (error)
+      {
+        std::error_code ignored;
+        std::filesystem::remove(temporary, ignored);
         throw std::runtime_error("cannot rename " + temporary + " to "
                                  + filename + ": " + error.message());
+      }
+    }
+
+
+    Checkpoint
+    parse_checkpoint(const std::string &bytes, const std::string &filename)
+    {
+      Checkpoint checkpoint;
+      try
+      {
+        const std::string read_tag(bytes.data(),
+                                   std::min(bytes.size(), sizeof(tag)));
+        const bool with_checksum = read_tag == std::string(tag, sizeof(tag));
+        if (!with_checksum
+            && read_tag != std::string(tag_before_checksum, sizeof(tag))
+            && read_tag != std::string(tag_before_release, sizeof(tag))
+            && read_tag != std::string(tag_before_stages, sizeof(tag)))
+          throw std::runtime_error("not a deepdraw checkpoint");
+        std::size_t content = bytes.size();
+        if (with_checksum)
+        {
+          if (content < sizeof(tag) + checksum_size)
+            throw std::runtime_error("the file ends early");
+          content -= checksum_size;
+          std::uint32_t stored = 0;
+          std::copy_n(bytes.data() + content,
+                      checksum_size,
+                      reinterpret_cast<char *>(&stored));
+          if (io::crc32(bytes.data(), content) != stored)
+            throw std::runtime_error(
+              "checksum: the CRC-32 of its content does not match the one "
+              "stored in it (the file was changed or damaged after it was "
+              "written)");
+        }
+        std::istringstream stream(bytes.substr(sizeof(tag),
+                                               content - sizeof(tag)),
+                                  std::ios::binary);
+        read_fields(stream, read_tag.c_str(), checkpoint);
+      }
+      catch (const std::runtime_error &error)
+      {
+        throw InputError("--resume: " + filename
+                         + " is not a usable checkpoint: "
+                         + io::one_line(error.what()));
+      }
+      return checkpoint;
     }
 
 
     Checkpoint
     read_checkpoint(const std::string &filename)
     {
-      std::ifstream stream(filename, std::ios::binary);
-      if (!stream)
+      std::error_code error;
+      const auto      status = std::filesystem::status(filename, error);
+      std::ifstream   stream;
+      if (std::filesystem::is_regular_file(status))
+        stream.open(filename, std::ios::binary);
+      if (!stream.is_open() || !stream)
         throw InputError("--resume: there is no checkpoint " + filename
                          + " (checkpoints are written every Checkpoint/"
                            "Interval increments, at the end of every stage "
                            "but the last, and at a clean stop)");
-      Checkpoint checkpoint;
-      try
-      {
-        char read_tag[sizeof(tag)] = {};
-        stream.read(read_tag, sizeof(tag));
-        const bool before_stages
-          = stream && std::string(read_tag) == tag_before_stages;
-        if (!stream
-            || (std::string(read_tag) != tag
-                && std::string(read_tag) != tag_before_release
-                && !before_stages))
-          throw std::runtime_error("not a deepdraw checkpoint");
-        checkpoint.parameters = io::read_string(stream, source);
-        checkpoint.state.read(stream);
-        if (before_stages)
-          read_output_progress(stream, checkpoint);
-        else
-        {
-          checkpoint.table_sizes = read_table_sizes(stream);
-          std::size_t n          = 0;
-          get(stream, n);
-          for (std::size_t i = 0; i < n && stream; ++i)
-          {
-            const std::string name          = io::read_string(stream, source);
-            checkpoint.postprocessors[name] = io::read_string(stream, source);
-          }
-        }
-      }
-      catch (const std::runtime_error &error)
-      {
-        throw InputError("--resume: " + filename
-                         + " is not a usable checkpoint: " + error.what());
-      }
-      return checkpoint;
+      std::ostringstream bytes(std::ios::binary);
+      bytes << stream.rdbuf();
+      return parse_checkpoint(bytes.str(), filename);
     }
 
 
@@ -273,104 +368,5 @@ namespace deepdraw
     }
 
 
-    std::vector<std::string>
-    changed_model_parameters(const std::string &checkpointed,
-                             const std::string &current,
-                             const std::string &defaults,
-                             const unsigned int stage)
-    {
-      const auto               old_values     = parse_listing(checkpointed);
-      const auto               new_values     = parse_listing(current);
-      const auto               default_values = parse_listing(defaults);
-      std::vector<std::string> changes;
-      for (const auto &[name, value] : new_values)
-      {
-        if (may_change_on_resume(name, stage))
-          continue;
-        const auto old           = old_values.find(name);
-        const auto default_value = default_values.find(name);
-        if (old == old_values.end())
-        {
-          // A parameter younger than the checkpoint, at its default: the
-          // model as it was.
-          if (default_value == default_values.end()
-              || default_value->second != value)
-            changes.push_back(name + ": not in the checkpoint");
-        }
-        else if (old->second != value)
-          changes.push_back(name + ": " + old->second + " -> " + value);
-      }
-      for (const auto &[name, value] : old_values)
-        if (!may_change_on_resume(name, stage) && new_values.count(name) == 0)
-          changes.push_back(name + ": no longer a parameter");
-      return changes;
-    }
-
-
-    void
-    check_resumable(const Checkpoint  &checkpoint,
-                    const std::string &filename,
-                    const std::string &listing,
-                    const std::string &defaults,
-                    const unsigned int n_stages)
-    {
-      const unsigned int stage = checkpoint.state.stage;
-      if (stage >= n_stages)
-        throw InputError("--resume: " + filename + " was written in stage "
-                         + std::to_string(stage + 1) + ", but the process has "
-                         + std::to_string(n_stages) + " stage(s)");
-      const std::vector<std::string> changes
-        = changed_model_parameters(checkpoint.parameters,
-                                   listing,
-                                   defaults,
-                                   stage);
-      if (changes.empty())
-        return;
-      std::ostringstream message;
-      message << "--resume: " << filename
-              << " was written for another model; changed parameters:";
-      for (const std::string &change : changes)
-        message << "\n  " << change;
-      message << "\n(only the subsections Output and Checkpoint, the "
-                 "stopping parameters Process/Final load, Load stepping/"
-                 "Minimum increment and Load stepping/Maximum cut-backs, "
-                 "and the stages after the checkpoint's may change on a "
-                 "resume)";
-      throw InputError(message.str());
-    }
-
-
-    std::vector<std::pair<std::string, std::uintmax_t>>
-    csv_table_sizes(const std::string &directory)
-    {
-      std::vector<std::pair<std::string, std::uintmax_t>> sizes;
-      for (const auto &entry : std::filesystem::directory_iterator(directory))
-        if (entry.is_regular_file() && entry.path().extension() == ".csv")
-          sizes.emplace_back(entry.path().filename().string(),
-                             entry.file_size());
-      std::sort(sizes.begin(), sizes.end());
-      return sizes;
-    }
-
-
-    void
-    truncate_tables(
-      const std::string                                         &directory,
-      const std::vector<std::pair<std::string, std::uintmax_t>> &sizes)
-    {
-      for (const auto &[name, size] : sizes)
-      {
-        const std::string path = directory + "/" + name;
-        std::error_code   error;
-        const auto        actual = std::filesystem::file_size(path, error);
-        if (error || actual < size)
-          throw InputError(
-            "--resume: " + path
-            + (error ? " is missing" : " is shorter than at the checkpoint")
-            + "; the output directory was changed after the "
-              "checkpoint was written");
-        std::filesystem::resize_file(path, size);
-      }
-    }
   } // namespace state
 } // namespace deepdraw

@@ -1,7 +1,10 @@
+#include <cmath>
 #include <deepdraw/io/binary_stream.h>
 #include <deepdraw/state/simulation_state.h>
+#include <iomanip>
 #include <istream>
 #include <ostream>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -46,19 +49,42 @@ namespace deepdraw
                      n * sizeof(double));
       }
 
-      // A block written by put_doubles: its count, then its values.
+      // A count of elements of element_size bytes, at most what the stream
+      // holds.
       std::size_t
-      get_count(std::istream &stream)
+      get_count(std::istream      &stream,
+                const std::size_t  element_size,
+                const std::string &what)
       {
-        std::size_t n = 0;
-        get(stream, n);
-        return n;
+        return io::read_count(stream, element_size, source, what);
       }
 
       void
       get_values(std::istream &stream, double *values, const std::size_t n)
       {
         io::read_bytes(stream, values, n * sizeof(double), source);
+      }
+
+      std::string
+      to_string(const double value)
+      {
+        std::ostringstream text;
+        text << std::setprecision(12) << value;
+        return text.str();
+      }
+
+      // Every value of a block must be finite (a damaged checkpoint of a
+      // format without a checksum).
+      void
+      check_finite(const double      *values,
+                   const std::size_t  n,
+                   const std::string &what)
+      {
+        for (std::size_t i = 0; i < n; ++i)
+          if (!std::isfinite(values[i]))
+            throw std::runtime_error(what + ": value " + std::to_string(i)
+                                     + " is " + to_string(values[i])
+                                     + ", not a finite number");
       }
 
       // The doubles of one quadrature point: stress, back stress (6 + 6
@@ -110,10 +136,109 @@ namespace deepdraw
       }
 
       void
-      get_vector(std::istream &stream, Vector<double> &vector)
+      get_vector(std::istream      &stream,
+                 Vector<double>    &vector,
+                 const std::string &what)
       {
-        vector.reinit(get_count(stream));
+        vector.reinit(get_count(stream, sizeof(double), what));
         get_values(stream, vector.begin(), vector.size());
+        check_finite(vector.begin(), vector.size(), what);
+      }
+
+      void
+      get_doubles(std::istream        &stream,
+                  std::vector<double> &values,
+                  const std::string   &what)
+      {
+        values.resize(get_count(stream, sizeof(double), what));
+        get_values(stream, values.data(), values.size());
+        check_finite(values.data(), values.size(), what);
+      }
+
+      // The load, its last step and the increment count.
+      void
+      read_increment(std::istream &stream, SimulationState &state)
+      {
+        get(stream, state.load);
+        get(stream, state.last_load_increment);
+        get(stream, state.increment_number);
+        if (!std::isfinite(state.load))
+          throw std::runtime_error("load = " + to_string(state.load)
+                                   + " (must be finite)");
+        if (!std::isfinite(state.last_load_increment)
+            || state.last_load_increment < 0.)
+          throw std::runtime_error("last load increment = "
+                                   + to_string(state.last_load_increment)
+                                   + " (must be finite and not negative)");
+      }
+
+      // Which pairs were open (0 or 1), each pair's state (0 ... 3: not
+      // found, 1 + open, stick, slip) and the tool positions.
+      void
+      read_contact(std::istream &stream, contact::ContactHistory &contact)
+      {
+        const std::pair<std::vector<unsigned char> *, unsigned char> blocks[]
+          = {{&contact.pair_open, 1}, {&contact.pair_status, 3}};
+        for (const auto &[bytes, largest] : blocks)
+        {
+          bytes->resize(get_count(stream, 1, "contact pairs"));
+          io::read_bytes(stream, bytes->data(), bytes->size(), source);
+          for (const unsigned char value : *bytes)
+            if (value > largest)
+              throw std::runtime_error(
+                "contact pairs: a pair's state is " + std::to_string(value)
+                + ", allowed are 0 to " + std::to_string(largest));
+        }
+        get_doubles(stream, contact.tool_position, "tool positions");
+      }
+
+      // Per cycle the refined cells as (level, index, refinement case).
+      void
+      read_refinements(std::istream                                 &stream,
+                       std::vector<std::vector<std::array<int, 3>>> &cycles)
+      {
+        cycles.resize(get_count(stream, sizeof(std::size_t), "refinements"));
+        for (auto &cycle : cycles)
+        {
+          cycle.resize(
+            get_count(stream, sizeof(cycle[0]), "refinements of a cycle"));
+          io::read_bytes(stream,
+                         cycle.data(),
+                         cycle.size() * sizeof(cycle[0]),
+                         source);
+          for (const auto &[level, index, refinement] : cycle)
+            if (level < 0 || index < 0 || refinement < 1 || refinement > 7)
+              throw std::runtime_error(
+                "refinements: cell (" + std::to_string(level) + ", "
+                + std::to_string(index) + ") with refinement case "
+                + std::to_string(refinement)
+                + " (a level and index of 0 or more and a case of 1 to 7)");
+        }
+      }
+
+      // The stage, whether it has ended, its force scale, the tools'
+      // origins and translations.
+      void
+      read_stage(std::istream &stream, SimulationState &state)
+      {
+        get(stream, state.stage);
+        unsigned char completed = 0;
+        get(stream, completed);
+        if (completed > 1)
+          throw std::runtime_error("stage completed = "
+                                   + std::to_string(completed)
+                                   + " (must be 0 or 1)");
+        state.stage_completed = completed != 0;
+        get(stream, state.stage_force_scale);
+        if (!std::isfinite(state.stage_force_scale)
+            || state.stage_force_scale < 0.)
+          throw std::runtime_error("stage force scale = "
+                                   + to_string(state.stage_force_scale)
+                                   + " (must be finite and not negative)");
+        get_doubles(stream, state.contact.tool_origin, "tool origins");
+        get_doubles(stream,
+                    state.contact.tool_translation,
+                    "tool translations");
       }
     } // namespace
 
@@ -178,64 +303,56 @@ namespace deepdraw
     void
     SimulationState::read(std::istream &stream)
     {
-      char read_tag[sizeof(tag)] = {};
-      stream.read(read_tag, sizeof(tag));
-      const bool with_release = stream && std::string(read_tag) == tag;
-      const bool with_stages
-        = with_release
-          || (stream && std::string(read_tag) == tag_before_release);
-      if (!with_stages
-          && (!stream || std::string(read_tag) != tag_without_stages))
+      // The tag's bytes as read, its final NUL included: a damaged tag
+      // need not end in one (found by fuzz/checkpoint_fuzzer.cc).
+      std::string read_tag(sizeof(tag), '\0');
+      stream.read(read_tag.data(), sizeof(tag));
+      const auto is = [&](const char(&expected)[sizeof(tag)])
+      { return stream && read_tag == std::string(expected, sizeof(tag)); };
+      const bool with_release = is(tag);
+      const bool with_stages  = with_release || is(tag_before_release);
+      if (!with_stages && !is(tag_without_stages))
         throw std::runtime_error("simulation state: not a deepdraw state");
-      get(stream, load);
-      get(stream, last_load_increment);
-      get(stream, increment_number);
-      std::size_t n = get_count(stream);
+      read_increment(stream, *this);
+      std::size_t n = get_count(stream, sizeof(double), "vertices");
       if (n % 3 != 0)
         throw std::runtime_error("simulation state: bad vertex block");
       vertices.resize(n / 3);
       get_values(stream, reinterpret_cast<double *>(vertices.data()), n);
-      get_vector(stream, total_displacement);
-      get_vector(stream, converged_solution);
-      get_vector(stream, previous_converged_solution);
-      n = get_count(stream);
+      check_finite(reinterpret_cast<const double *>(vertices.data()),
+                   n,
+                   "vertices");
+      get_vector(stream, total_displacement, "total displacement");
+      get_vector(stream, converged_solution, "converged solution");
+      get_vector(stream,
+                 previous_converged_solution,
+                 "previous converged solution");
+      n = get_count(stream, sizeof(double), "history");
       if (n % doubles_per_point != 0)
         throw std::runtime_error("simulation state: bad history block");
       std::vector<double> points(n);
       get_values(stream, points.data(), n);
+      check_finite(points.data(), n, "history");
       history.resize(n / doubles_per_point);
       for (std::size_t q = 0; q < history.size(); ++q)
         unpack(&points[doubles_per_point * q], history[q]);
-      enhanced_parameters.resize(get_count(stream));
+      enhanced_parameters.resize(get_count(stream,
+                                           sizeof(fe::EnhancedParameters),
+                                           "enhanced parameters"));
       for (fe::EnhancedParameters &cell : enhanced_parameters)
       {
         io::read_bytes(stream, &cell, sizeof(cell), source);
+        check_finite(reinterpret_cast<const double *>(&cell),
+                     doubles_per_cell,
+                     "enhanced parameters");
       }
       get(stream, next_increment);
-      for (auto *bytes : {&contact.pair_open, &contact.pair_status})
-      {
-        bytes->resize(get_count(stream));
-        io::read_bytes(stream, bytes->data(), bytes->size(), source);
-      }
-      contact.tool_position.resize(get_count(stream));
-      get_values(stream,
-                 contact.tool_position.data(),
-                 contact.tool_position.size());
-      const std::size_t n_cycles = get_count(stream);
-      if (n_cycles > 100000)
-        throw std::runtime_error("simulation state: bad refinement block");
-      refinements.resize(n_cycles);
-      for (auto &cycle : refinements)
-      {
-        const std::size_t n_cells = get_count(stream);
-        if (n_cells > (std::size_t(1) << 32))
-          throw std::runtime_error("simulation state: bad refinement block");
-        cycle.resize(n_cells);
-        io::read_bytes(stream,
-                       cycle.data(),
-                       cycle.size() * sizeof(cycle[0]),
-                       source);
-      }
+      if (!std::isfinite(next_increment) || !(next_increment > 0.))
+        throw std::runtime_error(
+          "next increment = " + to_string(next_increment)
+          + " (the load stepping's next step must be positive and finite)");
+      read_contact(stream, contact);
+      read_refinements(stream, refinements);
       stage             = 0;
       stage_completed   = false;
       stage_force_scale = 0.;
@@ -247,29 +364,31 @@ namespace deepdraw
       contact.tool_translation.clear();
       if (!with_stages)
         return;
-      get(stream, stage);
-      unsigned char completed = 0;
-      get(stream, completed);
-      stage_completed = completed != 0;
-      get(stream, stage_force_scale);
-      for (auto *values : {&contact.tool_origin, &contact.tool_translation})
-      {
-        values->resize(get_count(stream));
-        get_values(stream, values->data(), values->size());
-      }
+      read_stage(stream, *this);
       if (!with_release)
         return;
       get(stream, end_force_scale);
-      get_vector(stream, release_loads);
-      const std::size_t n_supports = get_count(stream);
-      if (n_supports > 100000)
-        throw std::runtime_error("simulation state: bad support block");
+      if (!std::isfinite(end_force_scale) || end_force_scale < -1.)
+        throw std::runtime_error("end force scale = "
+                                 + to_string(end_force_scale)
+                                 + " (must be finite, -1 or more)");
+      get_vector(stream, release_loads, "release loads");
+      const std::size_t n_supports
+        = get_count(stream, sizeof(unsigned int), "release supports");
       release_support_vertices.resize(n_supports);
       io::read_bytes(stream,
                      release_support_vertices.data(),
                      n_supports * sizeof(unsigned int),
                      source);
-      get_vector(stream, release_start_displacement);
+      for (const unsigned int vertex : release_support_vertices)
+        if (vertex >= vertices.size())
+          throw std::runtime_error("release supports: vertex "
+                                   + std::to_string(vertex) + " of a sheet of "
+                                   + std::to_string(vertices.size())
+                                   + " vertices");
+      get_vector(stream,
+                 release_start_displacement,
+                 "release start displacement");
     }
   } // namespace state
 } // namespace deepdraw

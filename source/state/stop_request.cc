@@ -20,8 +20,10 @@ namespace deepdraw
     void
     install_stop_handlers()
     {
-      std::signal(SIGINT, record_signal);
-      std::signal(SIGTERM, record_signal);
+      // SIGHUP (the terminal closed) and SIGQUIT (Ctrl+backslash) end a run as
+      // SIGTERM does, with a checkpoint (D163).
+      for (const int signal_number : {SIGINT, SIGTERM, SIGHUP, SIGQUIT})
+        std::signal(signal_number, record_signal);
     }
 
 
@@ -39,6 +41,10 @@ namespace deepdraw
         return "SIGINT";
       if (signal_number == SIGTERM)
         return "SIGTERM";
+      if (signal_number == SIGHUP)
+        return "SIGHUP";
+      if (signal_number == SIGQUIT)
+        return "SIGQUIT";
       return "signal " + std::to_string(signal_number);
     }
   } // namespace state

@@ -8,6 +8,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 #include <deepdraw/adaptivity/mesh_adaptation.h>
+#include <deepdraw/io/output_lock.h>
 #include <deepdraw/postprocess/manager.h>
 #include <deepdraw/problem/console_report.h>
 #include <deepdraw/problem/increment_solver.h>
@@ -63,6 +64,12 @@ namespace deepdraw
       void
       run(const RunOptions &options = RunOptions());
 
+      // --check --resume: the checkpoint of the output directory verified
+      // as a resume verifies it (D160, D161): throws InputError naming the
+      // checkpoint and what is wrong; writes nothing.
+      void
+      check_resume();
+
       // What the post-processors read (tests read it too).
       const postprocess::SimulationAccess &
       access() const;
@@ -117,11 +124,21 @@ namespace deepdraw
       stop_cleanly(const std::string &reason);
       void
       save_checkpoint() const;
-      // The checkpoint of the output directory: checked against the
-      // parameters, the model restored, the tables cut back to their
-      // sizes then.
+      // The checkpoint of the output directory, verified whole (checksum,
+      // fields, parameters, input files, the model's sizes, the
+      // post-processors' data, the tables) and restored in memory; the
+      // tables are cut back to their sizes then only if cut_tables, after
+      // every check (D160).
       void
-      restore_checkpoint();
+      restore_checkpoint(bool cut_tables);
+      // The files the model reads besides the prm, by the parameter that
+      // names each: tool, outline and mesh files.
+      std::vector<std::pair<std::string, std::string>>
+      input_file_names() const;
+      // The output directory made if it is missing (not on a resume) and
+      // locked for this run (D162).
+      void
+      lock_output_directory(const RunOptions &options);
       // Adaptive refinement after a converged increment (D80): false if
       // the re-equilibration failed (reason says why).
       bool
@@ -142,6 +159,12 @@ namespace deepdraw
       // Sizes of the CSV tables after the last converged increment's rows
       // (a checkpoint leaves out the rows of later failed attempts).
       std::vector<std::pair<std::string, std::uintmax_t>> table_sizes;
+      // The digests of the input files when the run began (D161).
+      std::vector<state::InputFile> input_files;
+      // The run's hold on its output directory, and whether the directory
+      // was made for it.
+      io::OutputLock output_lock;
+      bool           made_output_directory = false;
     };
   } // namespace problem
 } // namespace deepdraw
