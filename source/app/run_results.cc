@@ -161,6 +161,41 @@ namespace deepdraw
             **sum += row[c];
         }
       }
+
+
+      // The first crossing of the forming-limit curve and the least margin
+      // (D174).
+      void
+      read_formability(const std::string &filename, RunResults &results)
+      {
+        namespace tables                 = postprocess::tables;
+        const std::optional<Table> table = read_table(filename);
+        if (!table)
+          return;
+        const int load     = table->column(tables::load);
+        const int margin   = table->column(tables::worst_margin);
+        const int beyond   = table->column(tables::beyond_range);
+        const int in_range = table->column(tables::in_range_margin);
+        if (load < 0 || margin < 0 || beyond < 0 || in_range < 0)
+          return;
+        const auto least = [](OptionalValue &value, const double x)
+        {
+          if (!value || x < *value)
+            value = x;
+        };
+        for (const std::vector<double> &row : table->rows)
+        {
+          if (!results.flc_first_crossing && row[margin] <= 0.)
+          {
+            results.flc_first_crossing              = row[load];
+            results.flc_first_crossing_beyond_range = row[beyond];
+          }
+          if (!results.flc_first_crossing_in_range && row[in_range] <= 0.)
+            results.flc_first_crossing_in_range = row[load];
+          least(results.flc_least_margin, row[margin]);
+          least(results.flc_least_margin_in_range, row[in_range]);
+        }
+      }
     } // namespace
 
 
@@ -197,6 +232,8 @@ namespace deepdraw
                   at.od_s0);
         results.travels.push_back(at);
       }
+      read_formability(directory + "/" + postprocess::tables::formability_table,
+                       results);
       return results;
     }
   } // namespace app

@@ -55,6 +55,8 @@ namespace deepdraw
         std::vector<double>        travels;
         std::vector<std::string>   draw_in_names;
         std::vector<StudyCase>     cases;
+        // FILE.prm lists the post-processor "forming limits" (D174).
+        bool forming_limits = false;
       };
 
 
@@ -256,6 +258,11 @@ namespace deepdraw
                                    ? output.output_directory
                                    : output_directory;
         setup.draw_in_names    = draw_in_names(prm);
+        prm.enter_subsection("Postprocess");
+        setup.forming_limits
+          = prm.get("List of postprocessors").find("forming limits")
+            != std::string::npos;
+        prm.leave_subsection();
 
         process::ProcessParameters process;
         process.parse_parameters(prm);
@@ -410,7 +417,8 @@ namespace deepdraw
         table = std::make_unique<StudyTable>(directory + "/study.csv",
                                              names,
                                              setup.travels,
-                                             setup.draw_in_names);
+                                             setup.draw_in_names,
+                                             setup.forming_limits);
       }
       catch (const std::exception &error)
       {

@@ -47,8 +47,10 @@ namespace deepdraw
     StudyTable::StudyTable(const std::string              &name,
                            const std::vector<std::string> &variable_names,
                            const std::vector<double>      &travels,
-                           const std::vector<std::string> &draw_in_names)
+                           const std::vector<std::string> &draw_in_names,
+                           const bool                      formability)
         : filename(name)
+        , formability(formability)
         , column_names(variable_names)
     {
       for (const char *column : {"status",
@@ -72,6 +74,13 @@ namespace deepdraw
       for (const std::string &quantity : quantities)
         for (const double travel : travels)
           column_names.push_back(at_travel(quantity, travel));
+      if (formability)
+        for (const char *column : {"flc_first_crossing_mm",
+                                   "flc_first_crossing_beyond_range",
+                                   "flc_first_crossing_in_range_mm",
+                                   "flc_least_margin",
+                                   "flc_least_margin_in_range"})
+          column_names.emplace_back(column);
       column_names.emplace_back("note");
 
       file.open(filename);
@@ -117,6 +126,13 @@ namespace deepdraw
       add([](const TravelResults &at) { return at.ox_s0; });
       add([](const TravelResults &at) { return at.od_strain; });
       add([](const TravelResults &at) { return at.od_s0; });
+      if (formability)
+        for (const OptionalValue &value : {r.flc_first_crossing,
+                                           r.flc_first_crossing_beyond_range,
+                                           r.flc_first_crossing_in_range,
+                                           r.flc_least_margin,
+                                           r.flc_least_margin_in_range})
+          fields.push_back(number_field(value));
       fields.push_back(text_field(row.note));
 
       if (fields.size() != column_names.size())

@@ -16,5 +16,21 @@ namespace deepdraw
       result.percent = 100. * result.strain / limit;
       return result;
     }
+
+
+    std::pair<double, double>
+    FormingLimitCurve::minor_strain_range() const
+    {
+      return {-std::numeric_limits<double>::infinity(),
+              std::numeric_limits<double>::infinity()};
+    }
+
+
+    bool
+    FormingLimitCurve::beyond_range(const double minor_strain) const
+    {
+      const auto [low, high] = minor_strain_range();
+      return minor_strain < low || minor_strain > high;
+    }
   } // namespace formability
 } // namespace deepdraw

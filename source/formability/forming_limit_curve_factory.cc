@@ -15,17 +15,25 @@ namespace deepdraw
                               const MarciniakKuczynskiParameters &parameters,
                               const std::string                  &yield_name)
     {
-      const MarciniakKuczynski mk(yield, SwiftLaw(material), parameters);
+      const MkHardening        hardening(material);
+      const MarciniakKuczynski mk(yield, hardening, parameters);
       std::vector<FlcPoint>    points;
       for (const MkLimitPoint &limit : mk.limit_curve())
         points.push_back({limit.minor_strain,
                           limit.major_strain,
                           limit.strain_ratio,
                           limit.groove_angle});
+      // Kinematic hardening is left out of the analysis (D135): said where
+      // the curve is described (--flc prints it, the plots' titles show it).
+      const std::string kinematic
+        = material.prager_modulus != 0.
+            ? "; isotropic hardening and proportional loading assumed, "
+              "Material/Prager modulus = "
+                + io::number_text(material.prager_modulus) + " MPa ignored"
+            : "";
       const std::string description
-        = "Marciniak-Kuczynski, " + yield_name
-          + ", Swift n = " + io::number_text(material.swift_exponent)
-          + ", f0 = " + io::number_text(parameters.imperfection);
+        = "Marciniak-Kuczynski, " + yield_name + ", " + hardening.description()
+          + ", f0 = " + io::number_text(parameters.imperfection) + kinematic;
       return TabulatedFlc(points,
                           "the Marciniak-Kuczynski curve (strain ratios "
                           "from the uniaxial one to 1)",
@@ -53,6 +61,13 @@ namespace deepdraw
         {
           const bool n_given = !std::isnan(parameters.keeler_n);
           const bool t_given = !std::isnan(parameters.keeler_thickness);
+          if (!n_given
+              && material.hardening_law != material::HardeningLawType::swift)
+            throw InputError(
+              "Formability/Keeler-Brazier n is empty and Material/Hardening "
+              "law is not Swift: there is no Swift exponent to take n from; "
+              "allowed values: a number 0 < n <= 0.21 (the sheet's "
+              "hardening exponent)");
           return std::make_unique<KeelerBrazierFlc>(
             n_given ? parameters.keeler_n : material.swift_exponent,
             t_given ? parameters.keeler_thickness : sheet_thickness,
@@ -63,9 +78,10 @@ namespace deepdraw
         }
         case CurveType::marciniak_kuczynski:
           return std::make_unique<TabulatedFlc>(
-            marciniak_kuczynski_curve(HillPlaneStress(material),
+            marciniak_kuczynski_curve(*create_plane_stress_yield(material),
                                       material,
-                                      parameters.marciniak_kuczynski));
+                                      parameters.marciniak_kuczynski,
+                                      plane_stress_yield_name(material)));
       }
       return nullptr;
     }

@@ -100,7 +100,7 @@ namespace deepdraw
       {
       public:
         GroovePath(const PlaneStressYield             &yield,
-                   const SwiftLaw                     &hardening,
+                   const MkHardening                  &hardening,
                    const MarciniakKuczynskiParameters &parameters,
                    const PlaneTensor                  &s_a,
                    const double                        psi0)
@@ -110,6 +110,7 @@ namespace deepdraw
             , s_a(s_a)
             , g_a(yield.gradient(s_a))
             , psi0(psi0)
+            , saturation(hardening.saturation_stress())
         {
           // Start: the groove at the stress of the sheet, the sheet carrying
           // f0 times the groove's stress (equilibrium of the thinner groove).
@@ -144,6 +145,14 @@ namespace deepdraw
           return epbar_b;
         }
 
+        // Whether a trial asked zone a for a stress at or above the
+        // saturation of the hardening law (no strain carries it).
+        bool
+        saturation_reached() const
+        {
+          return saturated;
+        }
+
       private:
         // The state at the end of a trial step, for the unknowns x =
         // (sigma_b in the groove frame, zone a's stress) / Y_b
@@ -159,7 +168,9 @@ namespace deepdraw
         {
           const double Y_b      = hardening.yield_stress(epbar_b + delta);
           const double stress_a = y[3] * Y_b;
-          // Zone a is rigid below its current yield stress.
+          // Zone a is rigid below its current yield stress; at or above the
+          // saturation the inverse is +infinity and the residual not finite.
+          saturated       = saturated || stress_a >= saturation;
           trial.d_epbar_a = stress_a > hardening.yield_stress(epbar_a)
                               ? hardening.equivalent_strain(stress_a) - epbar_a
                               : 0.;
@@ -246,10 +257,12 @@ namespace deepdraw
         }
 
         const PlaneStressYield &yield;
-        const SwiftLaw         &hardening;
+        const MkHardening      &hardening;
         const double            f0;
         const PlaneTensor       s_a, g_a;
         const double            psi0;
+        const double            saturation;
+        mutable bool            saturated = false;
 
         double      epbar_a = 0., epbar_b = 0.;
         PlaneTensor eps_a, eps_b;
@@ -267,42 +280,18 @@ namespace deepdraw
     }
 
 
-    SwiftLaw::SwiftLaw(const material::MaterialParameters &parameters)
-        : coefficient(parameters.swift_coefficient)
-        , prestrain(parameters.swift_prestrain)
-        , exponent(parameters.swift_exponent)
-    {
-    }
-
-
-    double
-    SwiftLaw::yield_stress(const double equivalent_plastic_strain) const
-    {
-      return coefficient
-             * std::pow(prestrain + equivalent_plastic_strain, exponent);
-    }
-
-
-    double
-    SwiftLaw::equivalent_strain(const double stress) const
-    {
-      return std::pow(stress / coefficient, 1. / exponent) - prestrain;
-    }
-
-
     MarciniakKuczynski::MarciniakKuczynski(
       const PlaneStressYield             &yield,
-      const SwiftLaw                     &hardening,
+      const MkHardening                  &hardening,
       const MarciniakKuczynskiParameters &parameters)
         : yield(yield)
         , hardening(hardening)
         , parameters(parameters)
     {
       parameters.validate();
-      if (!(hardening.exponent > 0.))
-        throw InputError("Material/Swift exponent is 0: allowed values for "
-                         "a Marciniak-Kuczynski curve are n > 0 (without "
-                         "hardening the limit strain is zero).");
+      const std::string perfectly_plastic = hardening.without_hardening();
+      if (!perfectly_plastic.empty())
+        throw InputError(perfectly_plastic);
     }
 
 
@@ -332,6 +321,17 @@ namespace deepdraw
       {
         // Zone a's equivalent strain increment over the groove's.
         const double new_rate = path.advance(parameters.strain_increment);
+        if (new_rate < 0. && path.saturation_reached())
+          fail(rho,
+               "reached the saturation stress of the hardening law ("
+                 + hardening.saturation_source() + ")",
+               " and the groove angle " + io::number_text(groove_angle)
+                 + " degrees before the groove localised: no strain "
+                   "carries a larger stress, and the analysis cannot "
+                   "continue (D171; with Formability/Marciniak-Kuczynski/"
+                   "Imperfection f0 = "
+                 + io::number_text(parameters.imperfection)
+                 + " the groove did not localise before it saturated)");
         if (new_rate < 0.)
           fail(rho,
                "did not converge",
@@ -372,8 +372,9 @@ namespace deepdraw
         // eps1 = n / (1 + rho) (eq. 4.2): a low limit found early bounds the
         // other angles' integrations.
         const double estimate
-          = std::atan(std::sqrt(-rho)
-                      * std::exp(-(1. - rho) * hardening.exponent / (1. + rho)))
+          = std::atan(
+              std::sqrt(-rho)
+              * std::exp(-(1. - rho) * hardening.necking_strain() / (1. + rho)))
             / degree;
         std::stable_sort(angles.begin(),
                          angles.end(),

@@ -1,8 +1,10 @@
-// Hill'48 in plane stress and the stress state of a given strain ratio
-// (doc/theory_formability.md §3).
+// Hill'48 and Yld2004-18p in plane stress and the stress state of a given
+// strain ratio (doc/theory_formability.md §3).
 #include <cmath>
 #include <deal.II/base/numbers.h>
 #include <deepdraw/formability/plane_stress_yield.h>
+#include <deepdraw/io/value_check.h>
+#include <deepdraw/material/kelvin.h>
 
 namespace deepdraw
 {
@@ -42,6 +44,83 @@ namespace deepdraw
       // shear component twice: g12 = N s12 / sigma_bar.
       g[0][1] = N * s[0][1] / sigma_bar;
       return g;
+    }
+
+
+    namespace
+    {
+      const material::MaterialParameters &
+      validated(const material::MaterialParameters &parameters)
+      {
+        parameters.validate();
+        return parameters;
+      }
+
+      // The 3D stress of a plane stress: sigma_33 = sigma_13 = sigma_23 = 0.
+      dealii::SymmetricTensor<2, 3>
+      three_dimensional(const PlaneTensor &s)
+      {
+        dealii::SymmetricTensor<2, 3> t;
+        t[0][0] = s[0][0];
+        t[1][1] = s[1][1];
+        t[0][1] = s[0][1];
+        return t;
+      }
+    } // namespace
+
+
+    Yld2004PlaneStress::Yld2004PlaneStress(
+      const material::MaterialParameters &parameters)
+        : criterion(validated(parameters))
+    {
+    }
+
+
+    double
+    Yld2004PlaneStress::equivalent_stress(const PlaneTensor &s) const
+    {
+      return criterion.equivalent_stress(three_dimensional(s));
+    }
+
+
+    PlaneTensor
+    Yld2004PlaneStress::gradient(const PlaneTensor &s) const
+    {
+      // The Kelvin gradient n has n_12 = sqrt2 d sigma_bar / d sigma_12
+      // (one shear coordinate); kelvin::to_tensor divides it by sqrt2, the
+      // tensor component g_12 with d sigma_bar = g : d sigma counting the
+      // shear twice. g_13 = g_23 = 0 (orthotropy); g_33 = -(g_11 + g_22)
+      // is the thickness strain rate that the analysis takes from volume
+      // constancy.
+      material::kelvin::Vector n;
+      criterion.evaluate(material::kelvin::from_tensor(three_dimensional(s)),
+                         n,
+                         nullptr);
+      const dealii::SymmetricTensor<2, 3> g3 = material::kelvin::to_tensor(n);
+      PlaneTensor                         g;
+      g[0][0] = g3[0][0];
+      g[1][1] = g3[1][1];
+      g[0][1] = g3[0][1];
+      return g;
+    }
+
+
+    std::unique_ptr<PlaneStressYield>
+    create_plane_stress_yield(const material::MaterialParameters &parameters)
+    {
+      if (parameters.yield_criterion == material::YieldCriterion::yld2004_18p)
+        return std::make_unique<Yld2004PlaneStress>(parameters);
+      return std::make_unique<HillPlaneStress>(parameters);
+    }
+
+
+    std::string
+    plane_stress_yield_name(const material::MaterialParameters &parameters)
+    {
+      if (parameters.yield_criterion == material::YieldCriterion::yld2004_18p)
+        return "Yld2004-18p a = "
+               + io::number_text(parameters.yld2004_exponent);
+      return "Hill'48";
     }
 
 

@@ -130,6 +130,13 @@ namespace deepdraw
     }
 
 
+    std::pair<double, double>
+    TabulatedFlc::minor_strain_range() const
+    {
+      return {nodes.front().minor_strain, nodes.back().minor_strain};
+    }
+
+
     std::vector<FlcPoint>
     parse_flc_table(const std::string &text, const std::string &entry)
     {

@@ -1,10 +1,12 @@
 // The surface strains of the sheet's columns (doc/theory_formability.md
 // §1.1, D140).
+#include <algorithm>
 #include <cmath>
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/io/value_check.h>
 #include <deepdraw/postprocess/column_strains.h>
 #include <optional>
+#include <utility>
 
 namespace deepdraw
 {
@@ -12,7 +14,8 @@ namespace deepdraw
   {
     namespace
     {
-      using Cell = Triangulation<3>::active_cell_iterator;
+      using Cell      = Triangulation<3>::active_cell_iterator;
+      using Footprint = std::array<std::pair<double, double>, 4>;
 
       // The neighbour across the through-thickness face f (4 below, 5
       // above) if it is an active cell with the same footprint: the two
@@ -27,6 +30,38 @@ namespace deepdraw
             || neighbour->face_index(f ^ 1u) != cell->face_index(f))
           return std::nullopt;
         return Cell(neighbour);
+      }
+
+      // The in-plane corners (X, Y) at t = 0 of a cell's bottom face
+      // (face 4), sorted: the same for every cell over one footprint,
+      // whatever the order of its vertices.
+      Footprint
+      footprint(const Cell &cell, const std::vector<Point<3>> &initial_vertices)
+      {
+        Footprint corners;
+        for (unsigned int v = 0; v < 4; ++v)
+        {
+          const Point<3> &X = initial_vertices[cell->face(4)->vertex_index(v)];
+          corners[v]        = {X[0], X[1]};
+        }
+        std::sort(corners.begin(), corners.end());
+        return corners;
+      }
+
+      // Whether p lies in the bounding box of the footprint.
+      bool
+      inside(const Point<2> &p, const Footprint &corners)
+      {
+        double x[2] = {corners[0].first, corners[0].first};
+        double y[2] = {corners[0].second, corners[0].second};
+        for (const auto &[cx, cy] : corners)
+        {
+          x[0] = std::min(x[0], cx);
+          x[1] = std::max(x[1], cx);
+          y[0] = std::min(y[0], cy);
+          y[1] = std::max(y[1], cy);
+        }
+        return p[0] >= x[0] && p[0] <= x[1] && p[1] >= y[0] && p[1] <= y[1];
       }
     } // namespace
 
@@ -76,6 +111,36 @@ namespace deepdraw
     }
 
 
+    ColumnStrains::Column
+    ColumnStrains::make_column(const Cell                  &bottom,
+                               const std::vector<Point<3>> &initial_vertices,
+                               const blank::SheetThickness &surfaces)
+    {
+      Column column;
+      for (unsigned int v = 0; v < 4; ++v)
+      {
+        const Point<3> &X = initial_vertices[bottom->face(4)->vertex_index(v)];
+        column.centre += Tensor<1, 2>({X[0], X[1]}) / 4.;
+      }
+      const auto location = surfaces.locate(column.centre);
+      if (!location)
+        throw InputError("the forming limits: the column of cells at (X, Y) "
+                         "= ("
+                         + io::number_text(column.centre[0]) + ", "
+                         + io::number_text(column.centre[1])
+                         + ") lies over no face of the sheet's bottom and "
+                           "top surfaces");
+      column.location = *location;
+      column.bottom   = SurfacePoint(location->bottom_vertices,
+                                   location->bottom_weights,
+                                   initial_vertices);
+      column.top      = SurfacePoint(location->top_vertices,
+                                location->top_weights,
+                                initial_vertices);
+      return column;
+    }
+
+
     void
     ColumnStrains::set_up(const Triangulation<3>      &mesh,
                           const std::vector<Point<3>> &initial_vertices,
@@ -85,6 +150,12 @@ namespace deepdraw
       lowest.clear();
       column_of_id.clear();
       cell_column.assign(mesh.n_active_cells(), numbers::invalid_unsigned_int);
+      // Stacks over the same footprint are one column; a stack that ends at
+      // a refined face (a coarse cell above or below cells refined
+      // isotropically) is no column of its own: its footprint is the finer
+      // columns' (D173).
+      std::map<Footprint, unsigned int>                    column_of_footprint;
+      std::vector<std::pair<std::vector<Cell>, Footprint>> covered;
       for (const auto &cell : mesh.active_cell_iterators())
       {
         if (cell_column[cell->active_cell_index()]
@@ -93,36 +164,53 @@ namespace deepdraw
         Cell bottom = cell;
         while (const auto below = stacked_neighbour(bottom, 4))
           bottom = *below;
+        std::vector<Cell> stack;
         for (std::optional<Cell> c = bottom; c; c = stacked_neighbour(*c, 5))
+          stack.push_back(*c);
+        const Footprint corners = footprint(bottom, initial_vertices);
+        if (bottom->face(4)->has_children()
+            || stack.back()->face(5)->has_children())
         {
-          cell_column[(*c)->active_cell_index()] = columns.size();
-          column_of_id[(*c)->id()]               = columns.size();
+          for (const Cell &c : stack)
+            cell_column[c->active_cell_index()] = columns.size();
+          covered.emplace_back(stack, corners);
+          continue;
         }
+        const auto [found, is_new]
+          = column_of_footprint.emplace(corners, columns.size());
+        if (is_new)
+        {
+          columns.push_back(make_column(bottom, initial_vertices, surfaces));
+          lowest.push_back(bottom);
+        }
+        assign(stack, found->second);
+      }
+      // A covered stack's cells (their VTU values) belong to the first
+      // column whose centre lies on its footprint.
+      for (const auto &[stack, corners] : covered)
+      {
+        unsigned int k = 0;
+        while (k < columns.size() && !inside(columns[k].centre, corners))
+          ++k;
+        if (k == columns.size())
+        {
+          columns.push_back(
+            make_column(stack.front(), initial_vertices, surfaces));
+          lowest.push_back(stack.front());
+        }
+        assign(stack, k);
+      }
+    }
 
-        Column column;
-        for (unsigned int v = 0; v < 4; ++v)
-        {
-          const Point<3> &X
-            = initial_vertices[bottom->face(4)->vertex_index(v)];
-          column.centre += Tensor<1, 2>({X[0], X[1]}) / 4.;
-        }
-        const auto location = surfaces.locate(column.centre);
-        if (!location)
-          throw InputError("the forming limits: the column of cells at (X, Y) "
-                           "= ("
-                           + io::number_text(column.centre[0]) + ", "
-                           + io::number_text(column.centre[1])
-                           + ") lies over no face of the sheet's bottom and "
-                             "top surfaces");
-        column.location = *location;
-        column.bottom   = SurfacePoint(location->bottom_vertices,
-                                     location->bottom_weights,
-                                     initial_vertices);
-        column.top      = SurfacePoint(location->top_vertices,
-                                  location->top_weights,
-                                  initial_vertices);
-        columns.push_back(column);
-        lowest.push_back(bottom);
+
+    void
+    ColumnStrains::assign(const std::vector<Cell> &stack,
+                          const unsigned int       column)
+    {
+      for (const Cell &c : stack)
+      {
+        cell_column[c->active_cell_index()] = column;
+        column_of_id[c->id()]               = column;
       }
     }
 

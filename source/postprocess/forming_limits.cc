@@ -1,5 +1,5 @@
 // Post-processor "forming limits" (doc/user_guide.md §8.2,
-// doc/theory_formability.md §6, D140-D145).
+// doc/theory_formability.md §6, D140-D145, D172).
 #include <algorithm>
 #include <cmath>
 #include <deepdraw/formability/flc_files.h>
@@ -10,6 +10,7 @@
 #include <deepdraw/postprocess/profile_travels.h>
 #include <deepdraw/postprocess/table_names.h>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace deepdraw
@@ -20,8 +21,7 @@ namespace deepdraw
 
     namespace
     {
-      constexpr char    table_name[] = "formability.csv";
-      const std::string state_name   = "the forming limits' state";
+      const std::string state_name = "the forming limits' state";
 
       // classify()'s order of precedence: a column counts in the first of
       // these that one of its surfaces is in.
@@ -73,6 +73,17 @@ namespace deepdraw
                               &e.point.margin.strain,
                               &e.point.margin.percent})
           io::read_value(stream, *value, state_name);
+      }
+
+      // The least margin of a point and where it is.
+      std::string
+      least_margin_text(const FormingLimits::Extreme &point)
+      {
+        std::ostringstream text;
+        text << std::setprecision(4) << "least margin "
+             << point.point.margin.strain << ", " << point.point.margin.percent
+             << " % of the limit, ";
+        return text.str();
       }
 
       std::string
@@ -164,8 +175,8 @@ namespace deepdraw
     void
     FormingLimits::start(const SimulationAccess &simulation, const bool resume)
     {
-      std::vector<std::string> columns = {"load",
-                                          "worst_margin",
+      std::vector<std::string> columns = {tables::load,
+                                          tables::worst_margin,
                                           "worst_margin_percent",
                                           "X",
                                           "Y",
@@ -177,7 +188,12 @@ namespace deepdraw
                                           "path_ratio_min",
                                           "path_ratio_max"};
       columns.insert(columns.end(), zone_columns.begin(), zone_columns.end());
-      table.open(simulation.output_directory() + "/" + table_name,
+      // The worst point beyond the curve's range (1) or within it (0), and
+      // the least margin of the points within it (D172).
+      columns.insert(columns.end(),
+                     {tables::beyond_range, tables::in_range_margin});
+      table.open(simulation.output_directory() + "/"
+                   + tables::formability_table,
                  columns,
                  resume);
       // The curve beside the diagrams (fld_<travel>mm.gp plots flc.csv).
@@ -204,7 +220,8 @@ namespace deepdraw
           point.major_strain = strains[k].surfaces[s].major_strain;
           point.minor_strain = strains[k].surfaces[s].minor_strain;
           point.margin = curve->margin(point.major_strain, point.minor_strain);
-          point.zone   = formability::classify(curve.get(),
+          point.beyond_range = curve->beyond_range(point.minor_strain);
+          point.zone         = formability::classify(curve.get(),
                                              parameters.zones,
                                              point.major_strain,
                                              point.minor_strain,
@@ -224,13 +241,16 @@ namespace deepdraw
 
     FormingLimits::Extreme
     FormingLimits::worst_point(const std::vector<ColumnFld> &results,
-                               const double                  load) const
+                               const double                  load,
+                               const bool within_range_only) const
     {
       Extreme worst;
       for (unsigned int k = 0; k < results.size(); ++k)
         for (const SheetSurface surface : sheet_surfaces)
         {
           const FldPoint &point = results[k].surfaces[unsigned(surface)];
+          if (within_range_only && point.beyond_range)
+            continue;
           if (!worst.found || point.margin.strain < worst.point.margin.strain)
             worst = {true, load, k, column_strains.centre(k), surface, point};
         }
@@ -265,12 +285,10 @@ namespace deepdraw
           paths[3 * k + s].add(results[k].surfaces[s].major_strain,
                                results[k].surfaces[s].minor_strain);
 
-      const Extreme worst = worst_point(results, load);
-      if (!first_crossing.found && worst.point.margin.strain <= 0.)
-        first_crossing = worst;
-      if (!least_margin.found
-          || worst.point.margin.strain < least_margin.point.margin.strain)
-        least_margin = worst;
+      const Extreme worst          = worst_point(results, load, false);
+      const Extreme worst_in_range = worst_point(results, load, true);
+      record(worst, first_crossing, least_margin);
+      record(worst_in_range, first_crossing_in_range, least_margin_in_range);
 
       const unsigned int             column = worst.column;
       const formability::StrainPath &path
@@ -289,6 +307,12 @@ namespace deepdraw
                                  path.largest_ratio()};
       for (const unsigned int count : zone_counts(results))
         row.push_back(count);
+      // No point within the range: 1e300, an infinite margin that a CSV
+      // file holds and every reader parses (the largest double, printed to
+      // 10 digits, would overflow).
+      row.push_back(worst.point.beyond_range ? 1. : 0.);
+      row.push_back(worst_in_range.found ? worst_in_range.point.margin.strain
+                                         : 1e300);
       table.add_row(row);
 
       for (const double travel : requested_loads(simulation))
@@ -314,7 +338,8 @@ namespace deepdraw
                           point.major_strain,
                           point.margin.strain,
                           point.margin.percent,
-                          double(unsigned(point.zone))});
+                          double(unsigned(point.zone)),
+                          point.beyond_range ? 1. : 0.});
         }
       const std::string stem      = "fld_" + travel_label(travel) + "mm";
       const std::string directory = simulation.output_directory();
@@ -326,7 +351,8 @@ namespace deepdraw
                                      "eps1",
                                      "margin",
                                      "margin_percent",
-                                     "zone"},
+                                     "zone",
+                                     tables::beyond_range},
                                     rows);
       formability::write_fld_plot(directory,
                                   stem,
@@ -337,14 +363,18 @@ namespace deepdraw
 
 
     // The strain paths with their count (a resume rebuilds the same mesh,
-    // D55), then the first crossing and the least margin.
+    // D55), then the first crossing and the least margin, of all points and
+    // of those within the curve's range.
     void
     FormingLimits::save(std::ostream &stream) const
     {
       io::write_value(stream, paths.size());
       for (const formability::StrainPath &path : paths)
         path.save(stream);
-      for (const Extreme *extreme : {&first_crossing, &least_margin})
+      for (const Extreme *extreme : {&first_crossing,
+                                     &least_margin,
+                                     &first_crossing_in_range,
+                                     &least_margin_in_range})
         write_extreme(stream, *extreme);
     }
 
@@ -363,22 +393,72 @@ namespace deepdraw
         path.load(stream, state_name);
       for (Extreme *extreme : {&first_crossing, &least_margin})
         read_extreme(stream, *extreme);
+      if (stream.peek() != std::char_traits<char>::eof())
+        for (Extreme *extreme :
+             {&first_crossing_in_range, &least_margin_in_range})
+          read_extreme(stream, *extreme);
+      else
+      {
+        // A checkpoint written before D172 knows the points within the
+        // range where the first crossing and the least margin are.
+        first_crossing_in_range = least_margin_in_range = Extreme();
+        for (auto [all, within] :
+             {std::pair(&first_crossing, &first_crossing_in_range),
+              std::pair(&least_margin, &least_margin_in_range)})
+          if (all->found && curve
+              && !curve->beyond_range(all->point.minor_strain))
+            *within = *all;
+      }
+    }
+
+
+    void
+    FormingLimits::record(const Extreme &worst,
+                          Extreme       &crossing,
+                          Extreme       &least) const
+    {
+      if (!worst.found)
+        return;
+      if (!crossing.found && worst.point.margin.strain <= 0.)
+        crossing = worst;
+      if (!least.found || worst.point.margin.strain < least.point.margin.strain)
+        least = worst;
     }
 
 
     std::string
     FormingLimits::summary() const
     {
-      if (first_crossing.found)
-        return "forming limit first crossed " + place(first_crossing);
       if (!least_margin.found)
         return "";
-      std::ostringstream text;
-      text << std::setprecision(4) << "forming limit not crossed (least margin "
-           << least_margin.point.margin.strain << ", "
-           << least_margin.point.margin.percent << " % of the limit, "
-           << place(least_margin) << ")";
-      return text.str();
+      const Extreme &extreme
+        = first_crossing.found ? first_crossing : least_margin;
+      std::string text
+        = first_crossing.found
+            ? "forming limit first crossed " + place(first_crossing)
+            : "forming limit not crossed (" + least_margin_text(least_margin)
+                + place(least_margin);
+      if (curve->beyond_range(extreme.point.minor_strain))
+      {
+        // Not measured by the curve: say so, and what the points within its
+        // range give (D172).
+        const auto [low, high] = curve->minor_strain_range();
+        std::ostringstream note;
+        note << std::setprecision(4) << ", beyond the curve's range (eps2 = "
+             << extreme.point.minor_strain << ", eps2/eps1 = "
+             << extreme.point.minor_strain / extreme.point.major_strain
+             << "; the curve is given for " << low << " <= eps2 <= " << high
+             << " and only held at its end value beyond); within its range ";
+        if (first_crossing_in_range.found)
+          note << "first crossed " << place(first_crossing_in_range);
+        else if (least_margin_in_range.found)
+          note << "not crossed (" << least_margin_text(least_margin_in_range)
+               << place(least_margin_in_range) << ")";
+        else
+          note << "no point";
+        text += note.str();
+      }
+      return first_crossing.found ? text : text + ")";
     }
 
     DEEPDRAW_REGISTER_POSTPROCESSOR(

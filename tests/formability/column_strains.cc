@@ -9,18 +9,22 @@
 // oblique in-plane direction turned about an oblique axis. Meshes: the
 // structured plate, two footprints refined in the plane (whole columns,
 // hanging vertices), one bottom cell refined isotropically (a footprint
-// split through the thickness: the coarse cell over it is a column of its
-// own, evaluated at the same centre), and the plate with its interior
-// vertices distorted. Also: every cell has a column, the column counts of
-// the refined meshes, and each refined column continues the column its
-// cells came from (inherited_from). Measured 2.8e-15 at most (round-off):
-// 1e-14 allowed.
+// split through the thickness: the coarse cell over it belongs to the four
+// finer columns, D173), the same in a plate of three layers with the middle
+// cell refined (coarse cells above and below) and with the bottom and the
+// top cell refined (finer stacks over the same footprints, one column
+// each), and the plate with its interior vertices distorted. Also: every
+// cell has a column, whose centre lies on the cell's footprint; no two
+// columns share a centre; the column counts of the refined meshes, and each
+// refined column continues the column its cells came from
+// (inherited_from). Measured 2.8e-15 at most (round-off): 1e-14 allowed.
 #include "../test_utilities.h"
 
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria.h>
 #include <deepdraw/postprocess/column_strains.h>
+#include <set>
 
 using namespace deepdraw;
 using namespace dealii;
@@ -105,10 +109,30 @@ namespace
     postprocess::ColumnStrains   columns;
     columns.set_up(mesh, X, surfaces);
     bool every_cell = true;
-    for (const unsigned int column : columns.column_of_cell())
-      every_cell = every_cell && column < columns.n_columns();
-    deepdraw_test::check_true(mesh_name + ": every cell in a column",
+    for (const auto &cell : mesh.active_cell_iterators())
+    {
+      const unsigned int column
+        = columns.column_of_cell()[cell->active_cell_index()];
+      if (column >= columns.n_columns())
+      {
+        every_cell = false;
+        continue;
+      }
+      const Point<2> &centre = columns.centre(column);
+      // The cell's footprint: its bounding box in x, y.
+      const BoundingBox<3> box = cell->bounding_box();
+      for (unsigned int d = 0; d < 2; ++d)
+        every_cell = every_cell && centre[d] >= box.lower_bound(d) - 1e-12
+                     && centre[d] <= box.upper_bound(d) + 1e-12;
+    }
+    deepdraw_test::check_true(mesh_name
+                                + ": every cell in a column on its footprint",
                               every_cell);
+    std::set<std::pair<double, double>> centres;
+    for (unsigned int k = 0; k < columns.n_columns(); ++k)
+      centres.emplace(columns.centre(k)[0], columns.centre(k)[1]);
+    deepdraw_test::check_true(mesh_name + ": no two columns at one centre",
+                              centres.size() == columns.n_columns());
 
     const Tensor<1, 3> shift({3., -2., 7.});
     for (const Case &c : cases())
@@ -138,10 +162,10 @@ namespace
   }
 
   void
-  make_plate(Triangulation<3> &mesh)
+  make_plate(Triangulation<3> &mesh, const unsigned int layers = 2)
   {
     GridGenerator::subdivided_hyper_rectangle(mesh,
-                                              {4, 3, 2},
+                                              {4, 3, layers},
                                               Point<3>(0., 0., 0.),
                                               Point<3>(4., 3., 0.5),
                                               /*colorize=*/true);
@@ -195,8 +219,30 @@ main()
   isotropic.begin_active()->set_refine_flag();
   isotropic.execute_coarsening_and_refinement();
   deepdraw_test::check_true(
-    "one cell refined isotropically: 12 - 1 + 4 + 1 columns",
-    check_mesh("one cell refined isotropically", isotropic).n_columns() == 16);
+    "one cell refined isotropically: 12 - 1 + 4 columns",
+    check_mesh("one cell refined isotropically", isotropic).n_columns() == 15);
+
+  // Three layers: the middle cell of the first footprint refined (a coarse
+  // cell below and above it), and the bottom and top cells refined (the
+  // finer stacks over the same four footprints).
+  for (const std::vector<unsigned int> &refined_layers :
+       std::vector<std::vector<unsigned int>>{{1}, {0, 2}})
+  {
+    Triangulation<3> layered;
+    make_plate(layered, 3);
+    for (const auto &cell : layered.active_cell_iterators())
+      for (const unsigned int layer : refined_layers)
+        if (cell->center()[0] < 1. && cell->center()[1] < 1.
+            && std::abs(cell->center()[2] - (layer + 0.5) / 6.) < 1e-9)
+          cell->set_refine_flag();
+    layered.execute_coarsening_and_refinement();
+    const std::string name = "three layers, layer(s) "
+                             + std::to_string(refined_layers.front())
+                             + (refined_layers.size() > 1 ? " and 2" : "")
+                             + " of a footprint refined";
+    deepdraw_test::check_true(name + ": 12 - 1 + 4 columns",
+                              check_mesh(name, layered).n_columns() == 15);
+  }
 
   // Interior vertices moved at random (the surfaces stay where they were).
   Triangulation<3> distorted;

@@ -3,7 +3,9 @@
 // the curve), and must raise deepdraw::InputError whose message names the
 // parameter (or file) and the allowed values: an FLC that is not a function
 // of eps2, negative or non-finite values, f0 outside (0, 1], an empty
-// table, and the other checks of formability_parameters.cc.
+// table, the other checks of formability_parameters.cc, and materials that
+// no curve can be computed from (a hardening law without hardening for the
+// M-K analysis, no Swift exponent for Keeler-Brazier, D170).
 #include "../test_utilities.h"
 
 #include <deal.II/base/parameter_handler.h>
@@ -129,6 +131,26 @@ main()
                mk + "end",
                {"Material/Swift exponent", "n > 0"},
                perfectly_plastic);
+  material::MaterialParameters flat_voce;
+  flat_voce.hardening_law = material::HardeningLawType::voce;
+  flat_voce.voce_B        = 0.;
+  expect_error("M-K with a Voce law without hardening",
+               mk + "end",
+               {"Material/Voce B", "B > 0 and C > 0"},
+               flat_voce);
+  material::MaterialParameters flat_table;
+  flat_table.hardening_law   = material::HardeningLawType::tabulated;
+  flat_table.hardening_table = {{0., 200.}, {0.1, 200.}};
+  expect_error("M-K with a flat hardening table",
+               mk + "end",
+               {"Material/Hardening table", "perfectly plastic"},
+               flat_table);
+  material::MaterialParameters voce;
+  voce.hardening_law = material::HardeningLawType::voce;
+  expect_error("Keeler-Brazier n from a Voce material",
+               "set Forming limit curve = Keeler-Brazier",
+               {"Formability/Keeler-Brazier n", "not Swift", "0 < n <= 0.21"},
+               voce);
   expect_error("safety band 100",
                "set Safety band = 100",
                {"Formability/Safety band", "0 <= band < 100"});

@@ -42,7 +42,8 @@ main()
       formability::MarciniakKuczynskiParameters parameters;
       parameters.imperfection = f0;
       const formability::MarciniakKuczynski mk(yield,
-                                               formability::SwiftLaw(material),
+                                               formability::MkHardening(
+                                                 material),
                                                parameters);
       point = mk.limit_point(rho);
       gaps.push_back(hill - point.major_strain);

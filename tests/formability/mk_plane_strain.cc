@@ -31,7 +31,7 @@ namespace
     formability::MarciniakKuczynskiParameters parameters;
     parameters.imperfection = f0;
     const formability::MarciniakKuczynski mk(yield,
-                                             formability::SwiftLaw(material),
+                                             formability::MkHardening(material),
                                              parameters);
     const formability::MkLimitPoint       point = mk.limit_point(0.);
 

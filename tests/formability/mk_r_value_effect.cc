@@ -28,7 +28,7 @@ main()
     formability::HillPlaneStress yield(material);
     formability::MarciniakKuczynskiParameters parameters;
     const formability::MarciniakKuczynski     mk(yield,
-                                             formability::SwiftLaw(material),
+                                             formability::MkHardening(material),
                                              parameters);
     equibiaxial.push_back(mk.limit_point(1.).major_strain);
     right_side.push_back(mk.limit_point(0.5).major_strain);

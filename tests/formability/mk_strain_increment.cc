@@ -19,7 +19,7 @@ main()
   formability::HillPlaneStress              yield(material);
   formability::MarciniakKuczynskiParameters coarse, fine;
   fine.strain_increment = 0.5 * coarse.strain_increment;
-  const formability::SwiftLaw                  swift(material);
+  const formability::MkHardening               swift(material);
   const std::vector<formability::MkLimitPoint> a
     = formability::MarciniakKuczynski(yield, swift, coarse).limit_curve();
   const std::vector<formability::MkLimitPoint> b

@@ -1,8 +1,10 @@
 // What a refinement study reads back from the output folder of one run
 // (doc/user_guide.md §3, §4.2): the mesh size from the console log, the cost
-// from statistics.csv, and at each travel the punch force, the draw-in and
-// the largest thinning on OX and OD. A value the run did not write (it
-// stopped before, or has no tools) is left empty.
+// from statistics.csv, at each travel the punch force, the draw-in and the
+// largest thinning on OX and OD, and from formability.csv the first
+// crossing of the forming-limit curve and the least margin. A value the run
+// did not write (it stopped before, has no tools, or no forming limits) is
+// left empty.
 #ifndef deepdraw_app_run_results_h
 #define deepdraw_app_run_results_h
 
@@ -39,6 +41,15 @@ namespace deepdraw
       OptionalValue increments, newton_iterations, cut_backs;
       // One per travel asked for.
       std::vector<TravelResults> travels;
+      // formability.csv (post-processor "forming limits", D174): the load
+      // of the first row whose worst margin is <= 0 and whether that point
+      // lies beyond the curve's range (1) or not (0); the load of the first
+      // row whose least margin within the range is <= 0; the least worst
+      // margin of all rows, and of the margins within the range. Empty
+      // where the curve was not crossed or the table is absent.
+      OptionalValue flc_first_crossing, flc_first_crossing_beyond_range,
+        flc_first_crossing_in_range, flc_least_margin,
+        flc_least_margin_in_range;
     };
 
     RunResults

@@ -30,11 +30,14 @@ namespace deepdraw
     {
     public:
       // Writes the header; throws std::runtime_error if the file cannot be
-      // written.
+      // written. With formability (the runs have the post-processor
+      // "forming limits") the columns of the first crossing of the curve
+      // and of the least margin follow the travels' (D174).
       StudyTable(const std::string              &filename,
                  const std::vector<std::string> &variable_names,
                  const std::vector<double>      &travels,
-                 const std::vector<std::string> &draw_in_names);
+                 const std::vector<std::string> &draw_in_names,
+                 bool                            formability = false);
 
       void
       add_row(const StudyRow &row);
@@ -49,6 +52,7 @@ namespace deepdraw
     private:
       std::ofstream            file;
       std::string              filename;
+      bool                     formability;
       std::vector<std::string> column_names;
     };
   } // namespace app

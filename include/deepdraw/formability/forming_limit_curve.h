@@ -8,6 +8,7 @@
 
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace deepdraw
@@ -50,6 +51,18 @@ namespace deepdraw
       // One line for titles and messages ("Keeler-Brazier, n = 0.2, ...").
       virtual std::string
       description() const = 0;
+
+      // The minor strains where the curve is given: a table's first and
+      // last point (an M-K curve's uniaxial and equibiaxial ends); beyond
+      // them a table is only held at its end values (D131). The whole line
+      // for a closed-form curve (Keeler-Brazier).
+      virtual std::pair<double, double>
+      minor_strain_range() const;
+
+      // Whether eps2 lies outside minor_strain_range(): a margin read there
+      // is not measured by the curve (D172).
+      bool
+      beyond_range(double minor_strain) const;
 
       FlcMargin
       margin(double major_strain, double minor_strain) const;

@@ -16,8 +16,10 @@ namespace deepdraw
   {
     // nullptr for curve type none. sheet_thickness (mm, Geometry/Thickness)
     // is the Keeler-Brazier thickness when that entry is empty, and the
-    // Swift exponent of material its n; the M-K curve uses Hill'48 of
-    // material (HillPlaneStress) and its Swift law.
+    // Swift exponent of material its n (InputError for another hardening
+    // law); the M-K curve uses the yield criterion of material in plane
+    // stress (create_plane_stress_yield) and its hardening law
+    // (MkHardening).
     std::unique_ptr<FormingLimitCurve>
     create_forming_limit_curve(const FormabilityParameters        &parameters,
                                const material::MaterialParameters &material,
@@ -33,7 +35,7 @@ namespace deepdraw
 
     // The M-K limit points of every strain ratio as a tabulated curve
     // (with their strain ratios and critical groove angles), for any
-    // plane-stress yield function and the Swift law of material.
+    // plane-stress yield function and the hardening law of material.
     TabulatedFlc
     marciniak_kuczynski_curve(const PlaneStressYield             &yield,
                               const material::MaterialParameters &material,

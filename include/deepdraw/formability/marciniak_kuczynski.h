@@ -2,14 +2,16 @@
 // (doc/theory_formability.md §4): a sheet with a groove whose initial
 // thickness is f0 times that of the rest, strained proportionally outside
 // the groove, rigid-plastic, in plane stress, with the program's own yield
-// function (any PlaneStressYield, Hill'48 by default) and the Swift law of
-// subsection Material. The limit strain of a strain path is the strain of
+// function (any PlaneStressYield: Hill'48 or Yld2004-18p) and the isotropic
+// hardening law of subsection Material (MkHardening: Swift, Voce or
+// tabulated). The limit strain of a strain path is the strain of
 // the homogeneous zone when the groove's equivalent strain increment first
 // exceeds the homogeneous zone's by the localisation factor, minimised over
 // the initial groove angle on the left side of the diagram.
 #ifndef deepdraw_formability_marciniak_kuczynski_h
 #define deepdraw_formability_marciniak_kuczynski_h
 
+#include <deepdraw/formability/mk_hardening.h>
 #include <deepdraw/formability/plane_stress_yield.h>
 #include <deepdraw/material/material_parameters.h>
 #include <limits>
@@ -42,23 +44,6 @@ namespace deepdraw
     };
 
 
-    // Swift's law Y = C (eps0 + epsbar)^n of subsection Material (the law of
-    // material::HillPlasticity) and its inverse.
-    struct SwiftLaw
-    {
-      explicit SwiftLaw(const material::MaterialParameters &parameters);
-
-      double
-      yield_stress(double equivalent_plastic_strain) const;
-
-      // The equivalent plastic strain at which Y = yield_stress (n > 0).
-      double
-      equivalent_strain(double yield_stress) const;
-
-      double coefficient, prestrain, exponent;
-    };
-
-
     struct MkLimitPoint
     {
       // eps2_dot / eps1_dot of the homogeneous zone; eps1 along the rolling
@@ -77,17 +62,19 @@ namespace deepdraw
     {
     public:
       // Keeps references to yield (which must outlive this object). Throws
-      // InputError if the parameters are invalid or the Swift exponent is 0
-      // (no hardening: the limit strain is zero).
+      // InputError if the parameters are invalid or the law does not harden
+      // (MkHardening::without_hardening: the limit strain is zero).
       MarciniakKuczynski(const PlaneStressYield             &yield,
-                         const SwiftLaw                     &hardening,
+                         const MkHardening                  &hardening,
                          const MarciniakKuczynskiParameters &parameters);
 
       // The limit strain of the homogeneous zone for the strain ratio rho
       // and the initial groove angle (degrees). +infinity if the groove does
       // not localise before its equivalent strain reaches 10, or if the
       // major strain of the homogeneous zone passes bound first (a search
-      // that has found a lower limit already stops there).
+      // that has found a lower limit already stops there). InputError if
+      // no step converges, naming the saturation of the hardening law
+      // where the analysis asked for a stress beyond it (D171).
       MkLimitPoint
       limit_for_groove_angle(double rho,
                              double groove_angle,
@@ -116,7 +103,7 @@ namespace deepdraw
       refine_groove_angle(double rho, const MkLimitPoint &grid_best) const;
 
       const PlaneStressYield      &yield;
-      SwiftLaw                     hardening;
+      MkHardening                  hardening;
       MarciniakKuczynskiParameters parameters;
     };
   } // namespace formability

@@ -1,15 +1,18 @@
 // The yield function of the sheet in plane stress, as the forming-limit
 // analysis needs it (doc/theory_formability.md §3): the equivalent stress of
 // an in-plane stress state given in the material axes (1 = rolling,
-// 2 = transverse direction) and its gradient. An interface, so that a
-// later criterion (Yld2004-18p) slots into the Marciniak-Kuczynski analysis
-// without changing it; HillPlaneStress is Hill'48 built from the
-// parameters of subsection Material.
+// 2 = transverse direction) and its gradient. An interface, so that every
+// criterion of subsection Material slots into the Marciniak-Kuczynski
+// analysis without changing it: HillPlaneStress (Hill'48) and
+// Yld2004PlaneStress (Yld2004-18p), chosen by create_plane_stress_yield().
 #ifndef deepdraw_formability_plane_stress_yield_h
 #define deepdraw_formability_plane_stress_yield_h
 
 #include <deal.II/base/symmetric_tensor.h>
 #include <deepdraw/material/material_parameters.h>
+#include <deepdraw/material/yld2004_criterion.h>
+#include <memory>
+#include <string>
 
 namespace deepdraw
 {
@@ -56,6 +59,41 @@ namespace deepdraw
     private:
       double F, G, H, N;
     };
+
+
+    // Yld2004-18p (material::Yld2004Criterion, doc/theory_material.md §1.2)
+    // in plane stress: the 3D criterion at sigma_33 = sigma_13 = sigma_23 =
+    // 0, normalised like it to rolling-direction tension. The gradient is
+    // the in-plane part of the 3D gradient, which the criterion gives in
+    // Kelvin coordinates (shear times sqrt 2): g_12 = n_K,12 / sqrt 2 in the
+    // full-contraction convention of PlaneStressYield::gradient
+    // (doc/theory_formability.md §3.1).
+    class Yld2004PlaneStress : public PlaneStressYield
+    {
+    public:
+      // Validates the parameters (InputError).
+      explicit Yld2004PlaneStress(
+        const material::MaterialParameters &parameters);
+
+      double
+      equivalent_stress(const PlaneTensor &stress) const override;
+
+      PlaneTensor
+      gradient(const PlaneTensor &stress) const override;
+
+    private:
+      material::Yld2004Criterion criterion;
+    };
+
+
+    // The plane-stress yield function of Material/Yield criterion:
+    // HillPlaneStress or Yld2004PlaneStress (validates the parameters).
+    std::unique_ptr<PlaneStressYield>
+    create_plane_stress_yield(const material::MaterialParameters &parameters);
+
+    // "Hill'48", or "Yld2004-18p a = 8" (the exponent), for descriptions.
+    std::string
+    plane_stress_yield_name(const material::MaterialParameters &parameters);
 
 
     // The strain-rate ratio eps2_dot / eps1_dot of uniaxial tension along

@@ -30,6 +30,10 @@ namespace deepdraw
       std::string
       description() const override;
 
+      // From the first to the last point.
+      std::pair<double, double>
+      minor_strain_range() const override;
+
     private:
       std::vector<FlcPoint> nodes;
       std::string           text;

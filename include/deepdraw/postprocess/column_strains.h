@@ -1,8 +1,10 @@
 // The in-plane surface strains of every column of the sheet
 // (doc/theory_formability.md §1.1): a column is a stack of active cells that
 // share their in-plane footprint, joined across their through-thickness
-// faces (4 and 5, as extruded from the blank); its centre (X, Y) in the
-// initial configuration is located on the sheet's bottom and top surfaces
+// faces (4 and 5, as extruded from the blank), stacks over the same
+// footprint being one column and a stack that ends at a refined face
+// belonging to the finer columns of its footprint (D173); its centre (X, Y) in
+// the initial configuration is located on the sheet's bottom and top surfaces
 // (blank::SheetThickness), and the principal logarithmic strains since
 // t = 0 are those of the bottom surface, of the top surface and of the mid
 // surface x = (x_top + x_bottom)/2 there (formability::surface_strain), in
@@ -118,6 +120,18 @@ namespace deepdraw
         blank::SheetThickness::Location location;
         SurfacePoint                    bottom, top;
       };
+
+      using Cell = Triangulation<3>::active_cell_iterator;
+
+      // The column of the stack whose lowest cell is bottom: its centre
+      // located on the surfaces (InputError if it lies over none).
+      static Column
+      make_column(const Cell                  &bottom,
+                  const std::vector<Point<3>> &initial_vertices,
+                  const blank::SheetThickness &surfaces);
+      // The cells of stack belong to column.
+      void
+      assign(const std::vector<Cell> &stack, unsigned int column);
 
       std::vector<Column>       columns;
       std::vector<unsigned int> cell_column;

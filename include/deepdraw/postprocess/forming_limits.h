@@ -36,6 +36,9 @@ namespace deepdraw
         double                 major_strain = 0., minor_strain = 0.;
         formability::FlcMargin margin;
         formability::FldZone   zone = formability::FldZone::safe;
+        // eps2 outside the curve's range, where a table is only held at its
+        // end value (D131, D172): the margin is not measured there.
+        bool beyond_range = false;
       };
 
       // A column's points by SheetSurface, and its thickness strain.
@@ -90,7 +93,9 @@ namespace deepdraw
       void
       load(std::istream &stream) override;
 
-      // Where the curve was first crossed, or the least margin.
+      // Where the curve was first crossed, or the least margin; a point
+      // beyond the curve's range is said to be, with the first crossing
+      // (or the least margin) within the range (D172).
       std::string
       summary() const override;
 
@@ -104,12 +109,19 @@ namespace deepdraw
 
     private:
       // The worst point (least margin along the major strain) of results,
-      // and the columns per zone (a column counts in the first zone of
-      // classify()'s order that one of its surfaces is in).
+      // of all points or of those within the curve's range, and the columns
+      // per zone (a column counts in the first zone of classify()'s order
+      // that one of its surfaces is in).
       Extreme
-      worst_point(const std::vector<ColumnFld> &results, double load) const;
+      worst_point(const std::vector<ColumnFld> &results,
+                  double                        load,
+                  bool                          within_range_only) const;
       std::array<unsigned int, 6>
       zone_counts(const std::vector<ColumnFld> &results) const;
+      // The first crossing and the least margin updated by an increment's
+      // worst point.
+      void
+      record(const Extreme &worst, Extreme &crossing, Extreme &least) const;
       // fld_<travel>mm.csv, .gp and .png.
       void
       write_fld_files(const SimulationAccess       &simulation,
@@ -123,7 +135,9 @@ namespace deepdraw
       // By column and surface (3 k + surface).
       std::vector<formability::StrainPath> paths;
       Extreme                              first_crossing, least_margin;
-      io::CsvFile                          table;
+      // The same among the points within the curve's range (D172).
+      Extreme     first_crossing_in_range, least_margin_in_range;
+      io::CsvFile table;
     };
   } // namespace postprocess
 } // namespace deepdraw

@@ -35,6 +35,16 @@ namespace deepdraw
       // profiles").
       inline const std::string profile_distance = "s0_mm";
       inline const std::string thickness_strain = "thickness_strain";
+
+      // formability.csv (post-processor "forming limits"): the load, the
+      // worst point's margin, whether it lies beyond the curve's range and
+      // the least margin within it (D172). beyond_range is also a column of
+      // fld_<travel>mm.csv.
+      inline const std::string formability_table = "formability.csv";
+      inline const std::string load              = "load";
+      inline const std::string worst_margin      = "worst_margin";
+      inline const std::string beyond_range      = "beyond_range";
+      inline const std::string in_range_margin   = "in_range_margin";
     } // namespace tables
 
     // The travel as it appears in the names of the travel tables
