@@ -88,7 +88,7 @@ namespace deepdraw
     std::vector<fe::VertexParents>
     MeshAdaptation::refine(discretisation::SheetDiscretisation &sheet,
                            state::SimulationState              &state,
-                           const material::ElastoPlasticity      &material) const
+                           const material::ElastoPlasticity    &material) const
     {
       const unsigned int n_old_vertices = sheet.triangulation().n_vertices();
       TransferOptions    options;

@@ -10,7 +10,6 @@
 #include <deepdraw/postprocess/profile_travels.h>
 #include <deepdraw/postprocess/table_names.h>
 #include <iomanip>
-#include <limits>
 #include <sstream>
 
 namespace deepdraw

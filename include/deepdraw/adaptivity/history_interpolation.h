@@ -45,7 +45,7 @@ namespace deepdraw
     interpolate_history(const fe::QuadraturePointHistory *parent,
                         const Quadrature<3>              &quadrature,
                         const Point<3>                   &xi,
-                        const material::ElastoPlasticity   &material);
+                        const material::ElastoPlasticity &material);
   } // namespace adaptivity
 } // namespace deepdraw
 

@@ -66,7 +66,7 @@ namespace deepdraw
       std::vector<fe::VertexParents>
       refine(discretisation::SheetDiscretisation &sheet,
              state::SimulationState              &state,
-             const material::ElastoPlasticity      &material) const;
+             const material::ElastoPlasticity    &material) const;
 
       // The row of the refinement after its re-equilibration: the Newton
       // residuals at each of its checks and its iterations.

@@ -204,7 +204,7 @@ namespace deepdraw
                           const std::vector<double>                &old_area);
 
       const ModelParameters                              &parameters;
-      std::unique_ptr<material::ElastoPlasticity>           material_model;
+      std::unique_ptr<material::ElastoPlasticity>         material_model;
       discretisation::SheetDiscretisation                 discretisation;
       std::unique_ptr<fe::HexahedronElement>              element;
       discretisation::ThicknessMeasurement                thickness_measurement;
