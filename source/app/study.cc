@@ -14,10 +14,14 @@
 #include <deepdraw/blank/blank_geometry.h>
 #include <deepdraw/contact/contact_coupling.h>
 #include <deepdraw/io/input_error.h>
+#include <deepdraw/io/output_lock.h>
 #include <deepdraw/io/output_parameters.h>
+#include <deepdraw/io/parameter_file.h>
+#include <deepdraw/io/regular_file.h>
 #include <deepdraw/postprocess/profile_travels.h>
 #include <deepdraw/problem/forming_problem.h>
 #include <deepdraw/process/process_parameters.h>
+#include <deepdraw/state/stop_request.h>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -244,8 +248,7 @@ namespace deepdraw
              const std::string              &output_directory,
              const std::vector<std::string> &options)
       {
-        if (!std::ifstream(prm_file))
-          throw InputError("cannot open the parameter file '" + prm_file + "'");
+        io::check_regular_file(prm_file, "parameter file");
         StudySetup setup;
         setup.prm_file = prm_file;
         ParameterHandler prm;

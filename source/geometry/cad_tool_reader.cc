@@ -34,6 +34,7 @@
 #include <deepdraw/geometry/cad_occt_messages.h>
 #include <deepdraw/geometry/cad_tool_reader.h>
 #include <deepdraw/io/input_error.h>
+#include <deepdraw/io/regular_file.h>
 #include <filesystem>
 #include <memory>
 #include <sstream>
@@ -198,8 +199,7 @@ namespace deepdraw::geometry
     CadFile
     read_file(const std::string &filename, const MutedOcctMessages &messages)
     {
-      if (!std::filesystem::is_regular_file(filename))
-        throw InputError(filename + ": cannot open the CAD file");
+      io::check_regular_file(filename, "CAD file");
       if (std::filesystem::file_size(filename) == 0)
         throw InputError(filename + ": the CAD file is empty");
       const std::string extension

@@ -3,6 +3,7 @@
 #include <cstring>
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/io/printable_text.h>
+#include <deepdraw/io/regular_file.h>
 #include <deepdraw/io/text_file.h>
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -16,21 +17,18 @@ namespace deepdraw
     read_text_file(const std::string &filename, const std::string &kind)
     {
       const std::string name = one_line(filename, 500);
-      struct stat       status;
+      check_regular_file(filename, kind);
+      struct stat status;
       if (::stat(filename.c_str(), &status) != 0)
         throw InputError(name + ": cannot open the " + kind + " ("
                          + std::strerror(errno) + ")");
-      if (S_ISDIR(status.st_mode))
-        throw InputError(name + ": is a directory, not a " + kind);
-      if (!S_ISREG(status.st_mode))
-        throw InputError(name + ": is not a regular file, not a " + kind);
       if (static_cast<unsigned long long>(status.st_size) > max_text_file_size)
         throw InputError(name + ": " + std::to_string(status.st_size)
                          + " bytes, more than the "
                          + std::to_string(max_text_file_size >> 20) + " MB a "
                          + kind + " may have");
 
-      const int descriptor = ::open(filename.c_str(), O_RDONLY);
+      const int descriptor = ::open(filename.c_str(), O_RDONLY | O_NONBLOCK);
       if (descriptor < 0)
         throw InputError(name + ": cannot open the " + kind + " ("
                          + std::strerror(errno) + ")");

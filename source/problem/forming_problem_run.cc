@@ -7,8 +7,10 @@
 #include <cmath>
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/io/output_directory.h>
+#include <deepdraw/io/regular_file.h>
 #include <deepdraw/problem/console_report.h>
 #include <deepdraw/problem/forming_problem.h>
+#include <deepdraw/solver/mumps_factorization.h>
 #include <deepdraw/state/checkpoint.h>
 #include <deepdraw/state/stop_request.h>
 #include <filesystem>
@@ -42,6 +44,9 @@ namespace deepdraw
       std::error_code    error;
       if (options.resume && !std::filesystem::is_directory(directory, error))
         return;
+      // A named pipe in place of a table blocks the run that opens it
+      // (D164): refused before the lock file is written.
+      io::check_output_entries(directory);
       try
       {
         made_output_directory = !std::filesystem::exists(directory);
