@@ -75,11 +75,13 @@ namespace deepdraw
       }
 
 
+      // With the checks of a plain run (io/parameter_file.h): include
+      // cycles, files that are no text (D166).
       void
       read_prm(ParameterHandler &prm, const std::string &prm_file)
       {
         problem::FormingProblem::declare_parameters(prm);
-        prm.parse_input(prm_file);
+        io::read_parameter_file(prm, prm_file);
       }
 
 

@@ -85,7 +85,9 @@ namespace deepdraw::geometry
     // the parameter lines. While an object of this class lives, such a
     // crash ends the program with the message of an input error naming the
     // file and exit code 2 (doc/tool_files.md, D49), as before any output
-    // is written, instead of a bare "Segmentation fault".
+    // is written, instead of a bare "Segmentation fault". The handler runs
+    // on a stack of its own (sigaltstack): a crash by stack overflow leaves
+    // no room on the thread's stack for it (D165).
     class CrashGuard
     {
     public:
@@ -94,9 +96,15 @@ namespace deepdraw::geometry
                     + ": OpenCASCADE crashed while reading the file (it is "
                       "damaged)\n")
       {
-        current                 = this;
+        current            = this;
+        stack_t own_stack  = {};
+        own_stack.ss_sp    = signal_stack;
+        own_stack.ss_size  = sizeof(signal_stack);
+        own_stack.ss_flags = 0;
+        sigaltstack(&own_stack, &previous_stack);
         struct sigaction action = {};
         action.sa_handler       = &CrashGuard::handle;
+        action.sa_flags         = SA_ONSTACK;
         sigemptyset(&action.sa_mask);
         for (unsigned int k = 0; k < n_signals; ++k)
           sigaction(signals[k], &action, &previous[k]);
@@ -106,6 +114,7 @@ namespace deepdraw::geometry
       {
         for (unsigned int k = 0; k < n_signals; ++k)
           sigaction(signals[k], &previous[k], nullptr);
+        sigaltstack(&previous_stack, nullptr);
         current = nullptr;
       }
 
@@ -128,8 +137,11 @@ namespace deepdraw::geometry
       static constexpr unsigned int n_signals      = 3;
       static constexpr int      signals[n_signals] = {SIGSEGV, SIGBUS, SIGFPE};
       static inline CrashGuard *current            = nullptr;
-      const std::string         message;
-      struct sigaction          previous[n_signals];
+      // Static: the guard is made once per CAD file, on the main thread.
+      static inline char signal_stack[1 << 16];
+      stack_t            previous_stack = {};
+      const std::string  message;
+      struct sigaction   previous[n_signals];
     };
 
 
