@@ -59,6 +59,10 @@ namespace deepdraw
         }
       }
       ::close(descriptor);
+      // Editors on Windows start UTF-8 files with a byte-order mark, which
+      // would end up in the first value read (D175).
+      if (text.compare(0, 3, "\xEF\xBB\xBF") == 0)
+        text.erase(0, 3);
 
       const std::size_t bad = find_non_text_byte(text);
       if (bad != std::string::npos)
