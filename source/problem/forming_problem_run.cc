@@ -166,12 +166,23 @@ namespace deepdraw
         if (const int signal_number = state::requested_stop_signal())
           stop_cleanly("stopped by " + state::signal_name(signal_number));
 
-        const double old_load   = control.current_load();
-        const double new_load   = old_load + control.next_increment();
-        unsigned int iterations = 0;
-        std::string  reason;
-        if (solve_checked_increment(old_load, new_load, iterations, reason)
-            == IncrementOutcome::converged)
+        const double     old_load   = control.current_load();
+        const double     new_load   = old_load + control.next_increment();
+        unsigned int     iterations = 0;
+        std::string      reason;
+        IncrementOutcome outcome = IncrementOutcome::diverged;
+        try
+        {
+          outcome
+            = solve_checked_increment(old_load, new_load, iterations, reason);
+        }
+        catch (const solver::MumpsMemoryError &error)
+        {
+          // Memory, not the increment: no cut-back (D177).
+          model->restore_trial_state();
+          stop_cleanly(error.what());
+        }
+        if (outcome == IncrementOutcome::converged)
         {
           const unsigned int cut_backs
             = control.cut_backs_of_current_increment();
