@@ -15,6 +15,7 @@ Each class is a function of the repository root returning its cases.
 import os
 import subprocess
 
+from hostile_files_cases import special_file_cases
 from hostile_formability_cases import formability_cases
 from hostile_prm import BAR, CUP, bar, cup, sub
 from hostile_stage_cases import stage, stage_and_output_cases
@@ -501,4 +502,5 @@ CLASSES = {"stages_and_outputs": stage_and_output_cases,
            "formability": formability_cases,
            "files": files_cases, "command_line": command_line_cases,
            "expressions": expression_cases, "tool_files": tool_file_cases,
-           "run_time": run_time_cases, "blank_files": blank_file_cases}
+           "run_time": run_time_cases, "blank_files": blank_file_cases,
+           "special_files": special_file_cases}
