@@ -67,8 +67,11 @@ namespace deepdraw
     void
     check_output_path(const std::string &path)
     {
+      // A directory in the way does not block: the write fails with its
+      // own message (exit 3 for a checkpoint, tests/restart).
       struct stat status;
-      if (::stat(path.c_str(), &status) != 0 || S_ISREG(status.st_mode))
+      if (::stat(path.c_str(), &status) != 0 || S_ISREG(status.st_mode)
+          || S_ISDIR(status.st_mode))
         return;
       throw InputError(one_line(path, 500) + ": is " + file_type(status.st_mode)
                        + ", not a regular file; deepdraw would write its "

@@ -20,8 +20,9 @@ namespace deepdraw
     check_regular_file(const std::string &path, const std::string &kind);
 
     // Throws InputError "<path>: is a named pipe, not a regular file;
-    // deepdraw would write its results there" unless path is absent or a
-    // regular file (links followed).
+    // deepdraw would write its results there" if path is a named pipe, a
+    // device or a socket (links followed): what blocks or never ends. A
+    // directory in the way is left to the write, which fails naming it.
     void
     check_output_path(const std::string &path);
 
