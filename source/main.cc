@@ -7,12 +7,19 @@
 #include <deal.II/base/mpi.h>
 #include <deepdraw/app/command_line.h>
 #include <deepdraw/app/single_process_mpi.h>
+#include <iostream>
 #include <string>
 #include <vector>
 
 int
 main(int argc, char *argv[])
 {
+  if (const std::string problem = deepdraw::app::working_directory_problem();
+      !problem.empty())
+  {
+    std::cerr << "deepdraw: error in the input: " << problem << std::endl;
+    return 2;
+  }
   const deepdraw::app::SingleProcessMpi single_process_mpi;
   // As many threads as cores (or DEAL_II_NUM_THREADS): the element
   // assembly runs in a WorkStream loop whose copier adds the cells in a

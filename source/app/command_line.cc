@@ -10,8 +10,10 @@
 #include <deepdraw/app/commands.h>
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/io/output_error.h>
+#include <deepdraw/io/output_lock.h>
 #include <deepdraw/io/parameter_file.h>
 #include <deepdraw/io/printable_text.h>
+#include <deepdraw/io/regular_file.h>
 #include <deepdraw/problem/forming_problem.h>
 #include <deepdraw/state/stop_request.h>
 #include <iostream>
@@ -161,6 +163,16 @@ namespace deepdraw
         // --check --resume: the checkpoint too, as the resume would (D160).
         if (check_only && options.resume)
           forming_problem->check_resume();
+        // --check: what the run would refuse in its output directory, a
+        // live lock (D179) and a named pipe where it writes (D164).
+        if (check_only)
+        {
+          prm.enter_subsection("Output");
+          const std::string directory = prm.get("Output directory");
+          prm.leave_subsection();
+          io::OutputLock::check_free(directory, "Output/Output directory");
+          io::check_output_entries(directory);
+        }
       }
       catch (const InputError &error)
       {

@@ -7,6 +7,7 @@
 #include <sys/types.h>
 #include <system_error>
 #include <unistd.h>
+#include <vector>
 
 namespace deepdraw
 {
@@ -65,6 +66,23 @@ namespace deepdraw
       setenv("OMPI_MCA_orte_tmpdir_base", session_base.c_str(), 1);
       setenv("DEEPDRAW_MPI_SESSION_BASE", session_base.c_str(), 1);
       setenv("OMPI_MCA_ess_singleton_isolated", "1", 1);
+    }
+
+
+    std::string
+    working_directory_problem()
+    {
+      std::vector<char> buffer(4096);
+      while (::getcwd(buffer.data(), buffer.size()) == nullptr)
+      {
+        if (errno != ERANGE)
+          return std::string("the working directory cannot be read (")
+                 + std::strerror(errno)
+                 + (errno == ENOENT ? "; was it deleted?" : "")
+                 + "); start deepdraw in an existing directory";
+        buffer.resize(2 * buffer.size());
+      }
+      return "";
     }
 
 

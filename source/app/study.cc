@@ -14,10 +14,14 @@
 #include <deepdraw/blank/blank_geometry.h>
 #include <deepdraw/contact/contact_coupling.h>
 #include <deepdraw/io/input_error.h>
+#include <deepdraw/io/output_lock.h>
 #include <deepdraw/io/output_parameters.h>
+#include <deepdraw/io/parameter_file.h>
+#include <deepdraw/io/regular_file.h>
 #include <deepdraw/postprocess/profile_travels.h>
 #include <deepdraw/problem/forming_problem.h>
 #include <deepdraw/process/process_parameters.h>
+#include <deepdraw/state/stop_request.h>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -71,11 +75,13 @@ namespace deepdraw
       }
 
 
+      // With the checks of a plain run (io/parameter_file.h): include
+      // cycles, files that are no text (D166).
       void
       read_prm(ParameterHandler &prm, const std::string &prm_file)
       {
         problem::FormingProblem::declare_parameters(prm);
-        prm.parse_input(prm_file);
+        io::read_parameter_file(prm, prm_file);
       }
 
 
@@ -98,30 +104,34 @@ namespace deepdraw
       }
 
 
-      // Tool files are relative to the directory of the prm deepdraw is
-      // given (Contact/Tool N/File); a run reads input.prm in its folder,
-      // so the study names them absolutely (D42).
+      // Input files (tools, the outline, the Gmsh mesh, the FLC table) are
+      // relative to the directory of the prm deepdraw is given; a run reads
+      // input.prm in its folder, so the study names them absolutely (D42,
+      // D168).
       std::string
-      tool_file_overrides(ParameterHandler &prm, const std::string &prm_file)
+      input_file_overrides(ParameterHandler &prm, const std::string &prm_file)
       {
         const fs::path directory = fs::absolute(prm_file).parent_path();
-        std::string    text;
+        std::vector<std::pair<std::vector<std::string>, std::string>> entries
+          = {{{"Geometry"}, "Outline file"},
+             {{"Geometry"}, "Mesh file"},
+             {{"Formability"}, "Table file"}};
         for (unsigned int slot = 0; slot < contact::n_tool_slots; ++slot)
+          entries.push_back(
+            {{"Contact", "Tool " + std::to_string(slot + 1)}, "File"});
+        std::string text;
+        for (const auto &[subsections, entry] : entries)
         {
-          const std::string tool = "Tool " + std::to_string(slot + 1);
-          if (!is_declared(prm, {"Contact", tool}, "File"))
+          if (!is_declared(prm, subsections, entry))
             continue;
-          prm.enter_subsection("Contact");
-          prm.enter_subsection(tool);
-          const std::string name     = Utilities::trim(prm.get("Name"));
-          const std::string geometry = prm.get("Geometry");
-          const std::string file     = Utilities::trim(prm.get("File"));
-          prm.leave_subsection();
-          prm.leave_subsection();
-          if (!name.empty() && geometry == "file" && !file.empty()
-              && file[0] != '/')
-            text += prm_lines({"Contact", tool},
-                              "File",
+          for (const std::string &subsection : subsections)
+            prm.enter_subsection(subsection);
+          const std::string file = Utilities::trim(prm.get(entry));
+          for (unsigned int k = 0; k < subsections.size(); ++k)
+            prm.leave_subsection();
+          if (!file.empty() && fs::path(file).is_relative())
+            text += prm_lines(subsections,
+                              entry,
                               (directory / file).lexically_normal().string());
         }
         return text;
@@ -206,7 +216,7 @@ namespace deepdraw
           for (const StudyVariable &variable : setup.variables)
             set_value(prm, variable, run);
           describe_case(prm, setup.prm_file, case_, final_load);
-          case_.overrides += tool_file_overrides(prm, setup.prm_file);
+          case_.overrides += input_file_overrides(prm, setup.prm_file);
         }
         catch (const std::exception &)
         {
@@ -244,8 +254,7 @@ namespace deepdraw
              const std::string              &output_directory,
              const std::vector<std::string> &options)
       {
-        if (!std::ifstream(prm_file))
-          throw InputError("cannot open the parameter file '" + prm_file + "'");
+        io::check_regular_file(prm_file, "parameter file");
         StudySetup setup;
         setup.prm_file = prm_file;
         ParameterHandler prm;
@@ -352,6 +361,22 @@ namespace deepdraw
       }
 
 
+      // The exit code of a study stopped by signal stop after n_rows rows:
+      // 128 + the signal, as a shell reports a process killed by it.
+      int
+      study_interrupted(const int          stop,
+                        const unsigned int n_rows,
+                        const StudySetup  &setup,
+                        const std::string &directory)
+      {
+        std::cerr << "deepdraw: the study was stopped by "
+                  << state::signal_name(stop) << " after " << n_rows << " of "
+                  << setup.cases.size() << " runs; their rows are in "
+                  << directory << "/study.csv" << std::endl;
+        return 128 + stop;
+      }
+
+
       StudyPlotSpec
       plot_spec(const StudySetup &setup, const StudyTable &table)
       {
@@ -408,9 +433,13 @@ namespace deepdraw
 
       const std::string          &directory = setup.output_directory;
       std::unique_ptr<StudyTable> table;
+      // One study per folder, as one run per output folder (D162, D179).
+      io::OutputLock lock;
       try
       {
+        io::check_output_entries(directory);
         fs::create_directories(directory);
+        lock.acquire(directory, "--study", false);
         std::vector<std::string> names;
         for (const StudyVariable &variable : setup.variables)
           names.push_back(variable.name());
@@ -419,6 +448,12 @@ namespace deepdraw
                                              setup.travels,
                                              setup.draw_in_names,
                                              setup.forming_limits);
+      }
+      catch (const InputError &error)
+      {
+        std::cerr << "deepdraw: error in the input: " << error.what()
+                  << std::endl;
+        return 2;
       }
       catch (const std::exception &error)
       {
@@ -431,11 +466,24 @@ namespace deepdraw
       std::cout << "deepdraw --study: " << setup.cases.size() << " runs of "
                 << prm_file << "; results in " << directory << std::endl;
       unsigned int n_failed = 0;
+      // Ctrl-C reaches the run too (the terminal's process group); kill
+      // -INT of the study alone is passed on to the run (D179).
+      state::install_stop_handlers(true);
       try
       {
         for (unsigned int run = 0; run < setup.cases.size(); ++run)
         {
-          const StudyRow row = run_case(setup, run, std::cout);
+          if (const int stop = state::requested_stop_signal())
+            return study_interrupted(stop, run, setup, directory);
+          StudyRow row = run_case(setup, run, std::cout);
+          if (const int stop = state::requested_stop_signal())
+          {
+            row.interrupted = true;
+            row.note = join_notes("interrupted by " + state::signal_name(stop),
+                                  row.note);
+            table->add_row(row);
+            return study_interrupted(stop, run + 1, setup, directory);
+          }
           table->add_row(row);
           n_failed += row.failed ? 1 : 0;
         }

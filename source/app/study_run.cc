@@ -5,6 +5,7 @@
 #include <cstring>
 #include <deepdraw/app/study_run.h>
 #include <deepdraw/io/child_process.h>
+#include <deepdraw/state/stop_request.h>
 #include <fstream>
 #include <sstream>
 #include <vector>
@@ -66,7 +67,8 @@ namespace deepdraw
         {"deepdraw", input_prm, "--output-directory", run_directory},
         redirections,
         &error,
-        &signal);
+        &signal,
+        &state::requested_stop_signal);
       outcome.wall_seconds = std::chrono::duration<double>(
                                std::chrono::steady_clock::now() - start)
                                .count();

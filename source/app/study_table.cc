@@ -100,7 +100,9 @@ namespace deepdraw
       for (const std::string &value : row.values)
         fields.push_back(text_field(value));
       const RunResults &r = row.results;
-      fields.emplace_back(row.failed ? "failed" : "ok");
+      fields.emplace_back(row.interrupted ? "interrupted"
+                          : row.failed    ? "failed"
+                                          : "ok");
       for (const OptionalValue &value : {r.cells,
                                          r.displacement_unknowns,
                                          r.contact_unknowns,

@@ -9,6 +9,9 @@ namespace deepdraw
 {
   namespace blank
   {
+    static_assert(max_outline_radius == BlankGeometry::max_extent,
+                  "an outline's corners lie within a blank's extent");
+
     const std::array<std::string, 6> face_names
       = {{"xmin", "xmax", "ymin", "ymax", "zmin", "zmax"}};
 

@@ -6,9 +6,10 @@
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deepdraw/blank/blank_geometry.h>
+#include <deepdraw/blank/gmsh_file_check.h>
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/io/printable_text.h>
-#include <fstream>
+#include <sstream>
 
 namespace deepdraw
 {
@@ -171,14 +172,54 @@ namespace deepdraw
     }
 
 
+    namespace
+    {
+      // Why a quadrilateral cannot make a valid hexahedron, or "" (D178):
+      // the Jacobian of the bilinear map is positive everywhere if it is at
+      // the four corners, i.e. the cell is convex and counterclockwise.
+      std::string
+      corner_fault(const Triangulation<2>::active_cell_iterator &cell)
+      {
+        // deal.II's vertex order: 0 1 below, 2 3 above; round the cell
+        // counterclockwise: 0 1 3 2.
+        const unsigned int round[4] = {0, 1, 3, 2};
+        unsigned int       n_bad = 0, n_negative = 0, bad = 0;
+        for (unsigned int k = 0; k < 4; ++k)
+        {
+          const Point<2>    &before = cell->vertex(round[(k + 3) % 4]);
+          const Point<2>    &here   = cell->vertex(round[k]);
+          const Point<2>    &after  = cell->vertex(round[(k + 1) % 4]);
+          const Tensor<1, 2> a = after - here, b = before - here;
+          const double       turn = a[0] * b[1] - a[1] * b[0];
+          n_negative += turn < 0.;
+          if (!(turn > 0.))
+            ++n_bad, bad = round[k];
+        }
+        std::ostringstream corner;
+        corner << "(" << cell->vertex(bad)[0] << ", " << cell->vertex(bad)[1]
+               << ")";
+        if (n_negative == 4)
+          return " is inverted (its corners run clockwise)";
+        if (n_bad == 4)
+          return ""; // no area at all: reported as such
+        if (n_bad == 1)
+          return " is not convex: its corner at " + corner.str()
+                 + " points inwards (180 degrees or more)";
+        if (n_bad > 1)
+          return " crosses itself (a bow-tie: its edges cross) or is "
+                 "folded; a cell must be a convex quadrilateral with its "
+                 "corners counterclockwise";
+        return "";
+      }
+    } // namespace
+
+
     void
     BlankGeometry::read_plane_mesh()
     {
-      auto              mesh = std::make_shared<Triangulation<2>>();
-      std::ifstream     in(mesh_file);
-      const std::string name = io::one_line(mesh_file, 300);
-      if (!in)
-        throw InputError(name + ": cannot open the mesh file");
+      auto               mesh = std::make_shared<Triangulation<2>>();
+      const std::string  name = io::one_line(mesh_file, 300);
+      std::istringstream in(read_gmsh_text(mesh_file));
       try
       {
         GridIn<2> grid_in;
@@ -223,6 +264,8 @@ namespace deepdraw
                              + " lies on the far side of a symmetry plane "
                                "(Geometry/Symmetry planes): the mesh must be "
                                "the modelled part");
+        if (const std::string fault = corner_fault(cell); !fault.empty())
+          throw InputError(which + fault);
         if (!(cell->measure() > 0.))
           throw InputError(which + " has no positive area");
       }

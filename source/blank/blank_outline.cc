@@ -1,9 +1,11 @@
 #include <algorithm>
 #include <cmath>
 #include <deepdraw/blank/blank_outline.h>
+#include <deepdraw/blank/outline_crossing.h>
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/io/printable_text.h>
 #include <deepdraw/io/text_file.h>
+#include <optional>
 #include <sstream>
 
 namespace deepdraw
@@ -16,29 +18,6 @@ namespace deepdraw
       cross(const Tensor<1, 2> &a, const Tensor<1, 2> &b)
       {
         return a[0] * b[1] - a[1] * b[0];
-      }
-
-      // Whether the closed segments [a, b] and [c, d] share a point.
-      bool
-      segments_intersect(const Point<2> &a,
-                         const Point<2> &b,
-                         const Point<2> &c,
-                         const Point<2> &d)
-      {
-        const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a);
-        const double d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
-        if (((d1 > 0. && d2 < 0.) || (d1 < 0. && d2 > 0.))
-            && ((d3 > 0. && d4 < 0.) || (d3 < 0. && d4 > 0.)))
-          return true;
-        // Touching or collinear overlap: a point of one segment on the other.
-        const auto on_segment
-          = [](const Point<2> &p, const Point<2> &q, const Point<2> &x)
-        {
-          return std::abs(cross(q - p, x - p)) <= 1e-12 * (q - p).norm_square()
-                 && (x - p) * (q - p) >= 0. && (x - q) * (p - q) >= 0.;
-        };
-        return on_segment(a, b, c) || on_segment(a, b, d) || on_segment(c, d, a)
-               || on_segment(c, d, b);
       }
 
       struct NumberedPoint
@@ -68,8 +47,76 @@ namespace deepdraw
                              + ": expected two numbers 'x y' (mm), got '"
                              + io::one_line(text, 200) + "'");
           points.push_back({Point<2>(x, y), line});
+          if (points.size() > max_outline_corners)
+            throw InputError(io::one_line(filename, 300) + ":"
+                             + std::to_string(line) + ": more than the "
+                             + std::to_string(max_outline_corners)
+                             + " corners an outline may have");
         }
         return points;
+      }
+
+      using Fault = std::optional<std::pair<unsigned int, std::string>>;
+
+      // Corners in millimetres (D169): within the 10 m of a blank, and not
+      // so small that the cross products of the checks underflow.
+      Fault
+      scale_fault(const std::vector<NumberedPoint> &points)
+      {
+        // hypot: |p| of a corner at 1e200 mm without overflow.
+        const auto distance = [](const NumberedPoint &p)
+        { return std::hypot(p.point[0], p.point[1]); };
+        const NumberedPoint *farthest = &points.front();
+        for (const NumberedPoint &p : points)
+          if (distance(p) > distance(*farthest))
+            farthest = &p;
+        const double       r = distance(*farthest);
+        std::ostringstream text;
+        text << r;
+        if (r > max_outline_radius)
+          return std::make_pair(farthest->line,
+                                "this corner lies " + text.str()
+                                  + " mm from the origin, more than the "
+                                    "10000 mm a blank may extend (outline "
+                                    "coordinates are millimetres)");
+        if (r < min_outline_radius)
+          return std::make_pair(farthest->line,
+                                "the outline reaches only " + text.str()
+                                  + " mm from the origin, less than the "
+                                    "0.001 mm a blank must (outline "
+                                    "coordinates are millimetres)");
+        return {};
+      }
+
+      // Why the polygon is not star-shaped about the origin (the line of
+      // the first edge that turns the wrong way, or the last line), if it
+      // is not; sign is +1 for counterclockwise corners, -1 otherwise.
+      Fault
+      star_shaped_fault(const std::vector<NumberedPoint> &points, double &sign)
+      {
+        const std::size_t n       = points.size();
+        double            turning = 0.;
+        sign                      = 0.;
+        for (std::size_t i = 0; i < n; ++i)
+        {
+          const Point<2> &a = points[i].point, &b = points[(i + 1) % n].point;
+          const double    c = cross(a, b);
+          if (sign == 0.)
+            sign = c > 0. ? 1. : -1.;
+          if (!(c * sign > 0.))
+            return std::make_pair(
+              points[(i + 1) % n].line,
+              "the outline is not star-shaped about the origin: the ray "
+              "from the origin through this point does not leave the "
+              "outline once (the origin must lie inside, each direction "
+              "must meet the outline once)");
+          turning += std::atan2(c, a * b);
+        }
+        if (std::abs(std::abs(turning) - 2. * M_PI) > 1e-6)
+          return std::make_pair(points.back().line,
+                                "the outline does not go once round the "
+                                "origin");
+        return {};
       }
     } // namespace
 
@@ -103,41 +150,27 @@ namespace deepdraw
         if (points[i].point == points[(i + 1) % n].point)
           fail(points[(i + 1) % n].line, "the point repeats the one before");
 
-      // Crossing edges (the polygon must be simple); neighbours share a
-      // corner and are not compared.
-      for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t j = i + 2; j < n; ++j)
-          if ((j + 1) % n != i
-              && segments_intersect(points[i].point,
-                                    points[(i + 1) % n].point,
-                                    points[j].point,
-                                    points[(j + 1) % n].point))
-            fail(points[j].line,
-                 "the edge from this point crosses the edge from line "
-                   + std::to_string(points[i].line)
-                   + " (the outline intersects itself)");
+      if (const auto fault = scale_fault(points))
+        fail(fault->first, fault->second);
 
       // Star-shaped about the origin (D71): every edge turns the same way
-      // about it and the edges go round it exactly once.
-      double turning = 0.;
-      double sign    = 0.;
-      for (std::size_t i = 0; i < n; ++i)
+      // about it and the edges go round it exactly once. Such a polygon is
+      // simple (an edge covers its own sector of directions), so crossing
+      // edges are looked for only to name them when it is not (D169).
+      double     sign  = 0.;
+      const auto fault = star_shaped_fault(points, sign);
+      if (fault)
       {
-        const Point<2> &a = points[i].point, &b = points[(i + 1) % n].point;
-        const double    c = cross(a, b);
-        if (sign == 0.)
-          sign = c > 0. ? 1. : -1.;
-        if (!(c * sign > 0.))
-          fail(points[(i + 1) % n].line,
-               "the outline is not star-shaped about the origin: the ray "
-               "from the origin through this point does not leave the "
-               "outline once (the origin must lie inside, each direction "
-               "must meet the outline once)");
-        turning += std::atan2(c, a * b);
+        std::vector<Point<2>> corners;
+        for (const NumberedPoint &p : points)
+          corners.push_back(p.point);
+        if (const auto crossing = first_crossing(corners))
+          fail(points[crossing->second].line,
+               "the edge from this point crosses the edge from line "
+                 + std::to_string(points[crossing->first].line)
+                 + " (the outline intersects itself)");
+        fail(fault->first, fault->second);
       }
-      if (std::abs(std::abs(turning) - 2. * M_PI) > 1e-6)
-        fail(points.back().line,
-             "the outline does not go once round the origin");
 
       BlankOutline outline;
       for (const NumberedPoint &p : points)

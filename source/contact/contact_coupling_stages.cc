@@ -21,6 +21,40 @@ namespace deepdraw
       {
         return "Tool " + std::to_string(k + 1) + "/";
       }
+
+      // The force of a force-controlled tool at the stage's check loads:
+      // finite and at most max_force, then positive (D176): a force of 0
+      // leaves the tool without support, a negative one pulls it off the
+      // sheet, and both end in a stagnating Newton iteration.
+      void
+      check_force(const ToolMotion     &motion,
+                  const std::string    &tool_name,
+                  const process::Stage &stage)
+      {
+        const std::vector<double> loads = stage.check_loads();
+        for (const bool finite_pass : {true, false})
+          for (const double load : loads)
+          {
+            motion.force->set_time(load);
+            const double       force = motion.force->value(Point<1>());
+            std::ostringstream text;
+            text << std::setprecision(6) << motion.force_parameter << " = '"
+                 << io::one_line(motion.force_expression) << "' gives " << force
+                 << " N at t = " << load;
+            if (finite_pass && !(std::abs(force) <= ContactCoupling::max_force))
+            {
+              text << "; allowed are finite forces up to "
+                   << ContactCoupling::max_force << " N";
+              throw InputError(text.str());
+            }
+            if (!finite_pass && !(force > 0.))
+              throw InputError(
+                text.str() + " for the force-controlled tool '"
+                + io::one_line(tool_name)
+                + "'; allowed are forces > 0 N, pressing the tool onto "
+                  "the sheet along its Force direction");
+          }
+      }
     } // namespace
 
 
@@ -122,18 +156,8 @@ namespace deepdraw
             text << std::setprecision(6);
             if (motion.force_controlled)
             {
-              motion.force->set_time(load);
-              const double force = motion.force->value(Point<1>());
-              if (!(std::abs(force) <= max_force))
-              {
-                text << motion.force_parameter << " = '"
-                     << io::one_line(motion.force_expression) << "' gives "
-                     << force << " N at t = " << load
-                     << "; allowed are finite forces up to " << max_force
-                     << " N";
-                throw InputError(text.str());
-              }
-              continue;
+              check_force(motion, definitions[k].name, stages[s]);
+              break;
             }
             Vector<double> u(3);
             motion.translation->set_time(load);

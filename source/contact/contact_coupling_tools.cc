@@ -12,6 +12,7 @@
 #include <deepdraw/io/function_of_load.h>
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/io/printable_text.h>
+#include <deepdraw/io/regular_file.h>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -209,12 +210,17 @@ namespace deepdraw
             if (tool.file[0] != '/')
               tool.file = prm_directory + "/" + tool.file;
             // The tool file itself is read and checked when the tools
-            // are made (geometry/tool_file.h), with its own messages.
-            if (!std::ifstream(tool.file))
+            // are made (geometry/tool_file.h), with its own messages; a
+            // named pipe is refused before anything opens it (D164).
+            std::error_code error;
+            if (!std::filesystem::exists(tool.file, error))
               throw InputError(prefix
                                + "File: cannot open the tool "
                                  "file '"
                                + io::one_line(tool.file) + "'");
+            io::check_regular_file(tool.file,
+                                   tool.geometry == "cad" ? "CAD file"
+                                                          : "tool file");
           }
           tool.sheet_face       = prm.get("Sheet surface") == "top" ? 5 : 4;
           tool.force_controlled = prm.get("Control") == "force";

@@ -8,6 +8,52 @@
 
 namespace deepdraw::geometry
 {
+  namespace
+  {
+    // The line of the first parenthesis nested deeper than
+    // max_step_nesting, outside strings ('...', '' inside one) and
+    // comments (/* ... */); 0 if there is none.
+    unsigned int
+    line_nested_too_deep(const std::string &text)
+    {
+      unsigned int depth = 0, line = 1;
+      for (std::size_t i = 0; i < text.size(); ++i)
+      {
+        const char c = text[i];
+        if (c == '\n')
+          ++line;
+        else if (c == '\'')
+        {
+          // To the closing apostrophe; '' is an apostrophe in the string.
+          for (++i; i < text.size(); ++i)
+            if (text[i] == '\n')
+              ++line;
+            else if (text[i] == '\'')
+            {
+              if (i + 1 < text.size() && text[i + 1] == '\'')
+                ++i;
+              else
+                break;
+            }
+        }
+        else if (c == '/' && i + 1 < text.size() && text[i + 1] == '*')
+        {
+          const std::size_t end  = text.find("*/", i + 2);
+          const std::size_t stop = end == std::string::npos ? text.size() : end;
+          for (std::size_t k = i; k < stop; ++k)
+            line += text[k] == '\n';
+          i = end == std::string::npos ? text.size() : end + 1;
+        }
+        else if (c == '(' && ++depth > max_step_nesting)
+          return line;
+        else if (c == ')' && depth > 0)
+          --depth;
+      }
+      return 0;
+    }
+  } // namespace
+
+
   void
   check_step_frame(const std::string &filename)
   {
@@ -27,6 +73,14 @@ namespace deepdraw::geometry
                        + ": the STEP file is incomplete (cut short?): it does "
                          "not end with "
                        + end);
+    // OpenCASCADE's reader recurses once per level and overflows the stack
+    // on some 10^5 levels (D165).
+    if (const unsigned int line = line_nested_too_deep(text); line > 0)
+      throw InputError(filename + ":" + std::to_string(line)
+                       + ": parentheses nested more than "
+                       + std::to_string(max_step_nesting)
+                       + " deep; not a STEP file deepdraw reads (real "
+                         "files nest fewer than 10)");
   }
 
 

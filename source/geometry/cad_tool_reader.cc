@@ -34,6 +34,7 @@
 #include <deepdraw/geometry/cad_occt_messages.h>
 #include <deepdraw/geometry/cad_tool_reader.h>
 #include <deepdraw/io/input_error.h>
+#include <deepdraw/io/regular_file.h>
 #include <filesystem>
 #include <memory>
 #include <sstream>
@@ -84,7 +85,9 @@ namespace deepdraw::geometry
     // the parameter lines. While an object of this class lives, such a
     // crash ends the program with the message of an input error naming the
     // file and exit code 2 (doc/tool_files.md, D49), as before any output
-    // is written, instead of a bare "Segmentation fault".
+    // is written, instead of a bare "Segmentation fault". The handler runs
+    // on a stack of its own (sigaltstack): a crash by stack overflow leaves
+    // no room on the thread's stack for it (D165).
     class CrashGuard
     {
     public:
@@ -93,9 +96,15 @@ namespace deepdraw::geometry
                     + ": OpenCASCADE crashed while reading the file (it is "
                       "damaged)\n")
       {
-        current                 = this;
+        current            = this;
+        stack_t own_stack  = {};
+        own_stack.ss_sp    = signal_stack;
+        own_stack.ss_size  = sizeof(signal_stack);
+        own_stack.ss_flags = 0;
+        sigaltstack(&own_stack, &previous_stack);
         struct sigaction action = {};
         action.sa_handler       = &CrashGuard::handle;
+        action.sa_flags         = SA_ONSTACK;
         sigemptyset(&action.sa_mask);
         for (unsigned int k = 0; k < n_signals; ++k)
           sigaction(signals[k], &action, &previous[k]);
@@ -105,6 +114,7 @@ namespace deepdraw::geometry
       {
         for (unsigned int k = 0; k < n_signals; ++k)
           sigaction(signals[k], &previous[k], nullptr);
+        sigaltstack(&previous_stack, nullptr);
         current = nullptr;
       }
 
@@ -127,8 +137,11 @@ namespace deepdraw::geometry
       static constexpr unsigned int n_signals      = 3;
       static constexpr int      signals[n_signals] = {SIGSEGV, SIGBUS, SIGFPE};
       static inline CrashGuard *current            = nullptr;
-      const std::string         message;
-      struct sigaction          previous[n_signals];
+      // Static: the guard is made once per CAD file, on the main thread.
+      static inline char signal_stack[1 << 16];
+      stack_t            previous_stack = {};
+      const std::string  message;
+      struct sigaction   previous[n_signals];
     };
 
 
@@ -198,8 +211,7 @@ namespace deepdraw::geometry
     CadFile
     read_file(const std::string &filename, const MutedOcctMessages &messages)
     {
-      if (!std::filesystem::is_regular_file(filename))
-        throw InputError(filename + ": cannot open the CAD file");
+      io::check_regular_file(filename, "CAD file");
       if (std::filesystem::file_size(filename) == 0)
         throw InputError(filename + ": the CAD file is empty");
       const std::string extension

@@ -1,5 +1,6 @@
 #include <array>
 #include <deepdraw/io/checksum.h>
+#include <deepdraw/io/regular_file.h>
 #include <fstream>
 #include <stdexcept>
 #include <vector>
@@ -43,6 +44,7 @@ namespace deepdraw
     FileDigest
     file_digest(const std::string &filename)
     {
+      check_regular_file(filename, "input file");
       std::ifstream in(filename, std::ios::binary);
       if (!in)
         throw std::runtime_error("cannot read " + filename);

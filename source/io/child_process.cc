@@ -1,5 +1,6 @@
 // Child processes (io/child_process.h): posix_spawn with redirections.
 #include <cerrno>
+#include <csignal>
 #include <deepdraw/io/child_process.h>
 #include <fcntl.h>
 #include <spawn.h>
@@ -17,7 +18,8 @@ namespace deepdraw
                    const std::vector<std::string> &arguments,
                    const Redirections             &redirections,
                    int                            *error,
-                   int                            *signal)
+                   int                            *signal,
+                   int (*stop_signal)())
     {
       std::vector<char *> argv;
       for (const std::string &argument : arguments)
@@ -64,13 +66,21 @@ namespace deepdraw
         *error = result;
         return -1;
       }
-      int status = 0;
+      int  status    = 0;
+      bool forwarded = false;
       while (waitpid(pid, &status, 0) < 0)
+      {
         if (errno != EINTR)
         {
           *error = errno;
           return -1;
         }
+        if (stop_signal != nullptr && !forwarded && stop_signal() != 0)
+        {
+          ::kill(pid, stop_signal());
+          forwarded = true;
+        }
+      }
       if (WIFEXITED(status))
         return WEXITSTATUS(status);
       *signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;

@@ -72,6 +72,8 @@ namespace deepdraw
       filename = name;
       columns  = column_names;
       size     = 0;
+      // O_NONBLOCK: a named pipe put in place of the table fails to open
+      // (ENXIO) instead of blocking (D164); regular files ignore it.
       if (append)
       {
         std::ifstream existing(filename);
@@ -80,13 +82,15 @@ namespace deepdraw
             || header + '\n' != format_row(columns))
           throw OutputError(filename
                             + " does not have the columns of this run");
-        descriptor = ::open(filename.c_str(), O_WRONLY);
+        descriptor = ::open(filename.c_str(), O_WRONLY | O_NONBLOCK);
         if (descriptor < 0)
           throw OutputError(describe_system_error(errno, "opening", filename));
         size = ::lseek(descriptor, 0, SEEK_END);
         return;
       }
-      descriptor = ::open(filename.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+      descriptor = ::open(filename.c_str(),
+                          O_WRONLY | O_CREAT | O_TRUNC | O_NONBLOCK,
+                          0644);
       if (descriptor < 0)
         throw OutputError(describe_system_error(errno, "creating", filename));
       write_row(format_row(columns));

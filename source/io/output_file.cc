@@ -45,8 +45,11 @@ namespace deepdraw
                           const std::string &content)
     {
       const std::string temporary = filename + ".tmp";
-      const int         descriptor
-        = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+      // O_NONBLOCK: a named pipe in place of the temporary file fails to
+      // open instead of blocking (D164).
+      const int descriptor = ::open(temporary.c_str(),
+                                    O_WRONLY | O_CREAT | O_TRUNC | O_NONBLOCK,
+                                    0644);
       if (descriptor < 0)
         throw OutputError(describe_system_error(errno, "creating", temporary));
       const auto fail = [&](const int error_number, const std::string &doing)

@@ -104,7 +104,39 @@ namespace deepdraw
                && named.st_ino == opened.st_ino
                && named.st_dev == opened.st_dev;
       }
+
+      [[noreturn]] void
+      throw_in_use(const std::string &directory,
+                   const std::string &parameter,
+                   const long         pid)
+      {
+        throw InputError(
+          parameter + ": '" + one_line(directory) + "' is in use by "
+          + (pid > 0 ? "deepdraw process " + std::to_string(pid)
+                     : std::string("a deepdraw process of another host"))
+          + " (lock file " + one_line(OutputLock::file_name(directory))
+          + "); one output directory takes one run at a time: wait for "
+            "it to end, or use another output directory");
+      }
     } // namespace
+
+
+    void
+    OutputLock::check_free(const std::string &directory,
+                           const std::string &parameter)
+    {
+      // Read only, no flock of its own: --check writes nothing and must
+      // not make a starting run see the directory in use.
+      const std::string lock_file = file_name(directory);
+      const int         fd        = ::open(lock_file.c_str(),
+                            O_RDONLY | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK);
+      if (fd < 0)
+        return;
+      const long pid = holder_of(fd);
+      ::close(fd);
+      if (pid > 0 && pid != ::getpid())
+        throw_in_use(directory, parameter, pid);
+    }
 
 
     OutputLock::~OutputLock()
@@ -136,13 +168,7 @@ namespace deepdraw
         {
           const long pid = holder_of(fd);
           ::close(fd);
-          throw InputError(
-            parameter + ": '" + one_line(directory) + "' is in use by "
-            + (pid > 0 ? "deepdraw process " + std::to_string(pid)
-                       : std::string("a deepdraw process of another host"))
-            + " (lock file " + one_line(lock_file)
-            + "); one output directory takes one run at a time: wait for "
-              "it to end, or use another output directory");
+          throw_in_use(directory, parameter, pid);
         }
         if (failure != 0 && !quiet)
           // A file system without locks: the run goes on unprotected.

@@ -1,6 +1,7 @@
 #include <cctype>
 #include <cstdio>
 #include <deepdraw/io/printable_text.h>
+#include <iomanip>
 #include <sstream>
 
 namespace deepdraw
@@ -95,6 +96,15 @@ namespace deepdraw
         }
       }
       return result;
+    }
+
+
+    std::string
+    to_string(const double value)
+    {
+      std::ostringstream text;
+      text << std::setprecision(12) << value;
+      return text.str();
     }
 
 

@@ -3,6 +3,7 @@
 #include <cstring>
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/io/printable_text.h>
+#include <deepdraw/io/regular_file.h>
 #include <deepdraw/io/text_file.h>
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -16,21 +17,18 @@ namespace deepdraw
     read_text_file(const std::string &filename, const std::string &kind)
     {
       const std::string name = one_line(filename, 500);
-      struct stat       status;
+      check_regular_file(filename, kind);
+      struct stat status;
       if (::stat(filename.c_str(), &status) != 0)
         throw InputError(name + ": cannot open the " + kind + " ("
                          + std::strerror(errno) + ")");
-      if (S_ISDIR(status.st_mode))
-        throw InputError(name + ": is a directory, not a " + kind);
-      if (!S_ISREG(status.st_mode))
-        throw InputError(name + ": is not a regular file, not a " + kind);
       if (static_cast<unsigned long long>(status.st_size) > max_text_file_size)
         throw InputError(name + ": " + std::to_string(status.st_size)
                          + " bytes, more than the "
                          + std::to_string(max_text_file_size >> 20) + " MB a "
                          + kind + " may have");
 
-      const int descriptor = ::open(filename.c_str(), O_RDONLY);
+      const int descriptor = ::open(filename.c_str(), O_RDONLY | O_NONBLOCK);
       if (descriptor < 0)
         throw InputError(name + ": cannot open the " + kind + " ("
                          + std::strerror(errno) + ")");
@@ -61,6 +59,10 @@ namespace deepdraw
         }
       }
       ::close(descriptor);
+      // Editors on Windows start UTF-8 files with a byte-order mark, which
+      // would end up in the first value read (D175).
+      if (text.compare(0, 3, "\xEF\xBB\xBF") == 0)
+        text.erase(0, 3);
 
       const std::size_t bad = find_non_text_byte(text);
       if (bad != std::string::npos)

@@ -6,6 +6,7 @@
 #include <deal.II/base/utilities.h>
 #include <deepdraw/io/csv_file.h>
 #include <deepdraw/io/input_error.h>
+#include <deepdraw/io/printable_text.h>
 #include <deepdraw/postprocess/interface.h>
 #include <deepdraw/postprocess/table_names.h>
 #include <optional>
@@ -148,6 +149,14 @@ namespace deepdraw
           point.entry = entry;
           point.name
             = Utilities::trim(entry.substr(0, std::min(colon, entry.size())));
+          // The name heads CSV columns (NAME_draw_in): a comma or quote in
+          // it would split or open a column (D179).
+          if (point.name.find_first_of(",\"") != std::string::npos)
+            throw InputError(where + "the name '" + io::one_line(point.name)
+                             + "' has a comma or a quote, which would break "
+                               "the columns of "
+                             + tables::draw_in_table
+                             + "; allowed are names without them");
           const std::string where_on
             = colon == std::string::npos
                 ? ""

@@ -7,8 +7,10 @@
 #include <cmath>
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/io/output_directory.h>
+#include <deepdraw/io/regular_file.h>
 #include <deepdraw/problem/console_report.h>
 #include <deepdraw/problem/forming_problem.h>
+#include <deepdraw/solver/mumps_factorization.h>
 #include <deepdraw/state/checkpoint.h>
 #include <deepdraw/state/stop_request.h>
 #include <filesystem>
@@ -42,6 +44,9 @@ namespace deepdraw
       std::error_code    error;
       if (options.resume && !std::filesystem::is_directory(directory, error))
         return;
+      // A named pipe in place of a table blocks the run that opens it
+      // (D164): refused before the lock file is written.
+      io::check_output_entries(directory);
       try
       {
         made_output_directory = !std::filesystem::exists(directory);
@@ -161,12 +166,23 @@ namespace deepdraw
         if (const int signal_number = state::requested_stop_signal())
           stop_cleanly("stopped by " + state::signal_name(signal_number));
 
-        const double old_load   = control.current_load();
-        const double new_load   = old_load + control.next_increment();
-        unsigned int iterations = 0;
-        std::string  reason;
-        if (solve_checked_increment(old_load, new_load, iterations, reason)
-            == IncrementOutcome::converged)
+        const double     old_load   = control.current_load();
+        const double     new_load   = old_load + control.next_increment();
+        unsigned int     iterations = 0;
+        std::string      reason;
+        IncrementOutcome outcome = IncrementOutcome::diverged;
+        try
+        {
+          outcome
+            = solve_checked_increment(old_load, new_load, iterations, reason);
+        }
+        catch (const solver::MumpsMemoryError &error)
+        {
+          // Memory, not the increment: no cut-back (D177).
+          model->restore_trial_state();
+          stop_cleanly(error.what());
+        }
+        if (outcome == IncrementOutcome::converged)
         {
           const unsigned int cut_backs
             = control.cut_backs_of_current_increment();

@@ -8,6 +8,7 @@
 #include <deepdraw/problem/element_assembly.h>
 #include <deepdraw/problem/increment_solver.h>
 #include <deepdraw/problem/newton_measures.h>
+#include <deepdraw/solver/mumps_factorization.h>
 #include <iostream>
 
 namespace deepdraw
@@ -214,6 +215,10 @@ namespace deepdraw
       try
       {
         model.solve(correction);
+      }
+      catch (const solver::MumpsMemoryError &)
+      {
+        throw; // stops the run (FormingProblem::run_stage, D177)
       }
       catch (const std::exception &error)
       {

@@ -593,6 +593,10 @@ namespace deepdraw
               break;
           }
       }
+      catch (const MumpsMemoryError &)
+      {
+        throw; // not the matrix (D177)
+      }
       catch (const std::exception &error)
       {
         throw std::runtime_error(

@@ -17,6 +17,37 @@ namespace deepdraw
       {
         return fortran_index - 1;
       }
+
+      // What a memory or workspace failure of MUMPS is (its user guide,
+      // "Error diagnostics"); "" for other failures.
+      std::string
+      memory_failure(const int status, const int detail)
+      {
+        switch (status)
+        {
+          case -7:
+          case -13:
+            return "an allocation of "
+                   + (detail < 0 ? std::to_string(-detail) + " million"
+                                 : std::to_string(detail))
+                   + " entries failed: not enough memory";
+          case -8:
+          case -14:
+          case -15:
+            return "its integer workspace is too small";
+          case -9:
+          case -11:
+          case -12:
+            return "its real workspace is too small";
+          case -17:
+          case -20:
+            return "an internal buffer is too small";
+          case -19:
+            return "the memory limit ICNTL(23) is too small";
+          default:
+            return "";
+        }
+      }
     } // namespace
 
 
@@ -75,6 +106,16 @@ namespace deepdraw
           data.icntl[index(14)] *= 2;
           continue;
         }
+        const int         detail = data.infog[index(2)];
+        const std::string memory = memory_failure(status, detail);
+        if (!memory.empty())
+          throw MumpsMemoryError(
+            "the linear solver MUMPS ran out of memory in job "
+            + std::to_string(job) + " (INFOG(1) = " + std::to_string(status)
+            + ", INFOG(2) = " + std::to_string(detail) + ": " + memory
+            + ", with ICNTL(14) = " + std::to_string(data.icntl[index(14)])
+            + " % extra workspace); a smaller increment would not help: use "
+              "a coarser mesh or a machine with more memory");
         throw std::runtime_error(
           "MUMPS failed in job " + std::to_string(job)
           + " (INFOG(1) = " + std::to_string(status)

@@ -6,6 +6,7 @@
 #include <deepdraw/io/output_directory.h>
 #include <deepdraw/io/printable_text.h>
 #include <deepdraw/io/pvd_record.h>
+#include <deepdraw/io/regular_file.h>
 #include <deepdraw/state/checkpoint.h>
 #include <filesystem>
 #include <fstream>
@@ -322,6 +323,8 @@ namespace deepdraw
       std::error_code error;
       const auto      status = std::filesystem::status(filename, error);
       std::ifstream   stream;
+      if (std::filesystem::exists(status))
+        io::check_regular_file(filename, "checkpoint");
       if (std::filesystem::is_regular_file(status))
         stream.open(filename, std::ios::binary);
       if (!stream.is_open() || !stream)

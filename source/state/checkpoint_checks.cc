@@ -9,7 +9,6 @@
 #include <deepdraw/io/printable_text.h>
 #include <deepdraw/state/checkpoint.h>
 #include <filesystem>
-#include <iomanip>
 #include <map>
 #include <sstream>
 
@@ -72,14 +71,6 @@ namespace deepdraw
                   "files the run began with");
       }
 
-      std::string
-      to_string(const double value)
-      {
-        std::ostringstream text;
-        text << std::setprecision(12) << value;
-        return text.str();
-      }
-
       // The load of the checkpoint must lie in its stage's range, its next
       // step at most the stage's largest increment (D160).
       void
@@ -91,18 +82,18 @@ namespace deepdraw
         if (!(state.load >= range.start_load - tolerance
               && state.load <= range.end_load + tolerance))
           throw InputError(
-            "--resume: " + filename + ": load = " + to_string(state.load)
+            "--resume: " + filename + ": load = " + io::to_string(state.load)
             + " lies outside stage " + std::to_string(state.stage + 1)
-            + "'s range " + to_string(range.start_load) + " to "
-            + to_string(range.end_load)
+            + "'s range " + io::to_string(range.start_load) + " to "
+            + io::to_string(range.end_load)
             + " (a damaged checkpoint, or a Final load below the load it "
               "was written at)");
         if (!(state.next_increment <= range.maximum_increment * (1. + 1e-9)))
           throw InputError("--resume: " + filename + ": next increment = "
-                           + to_string(state.next_increment)
+                           + io::to_string(state.next_increment)
                            + " is larger than the stage's Maximum "
                              "increment "
-                           + to_string(range.maximum_increment));
+                           + io::to_string(range.maximum_increment));
       }
     } // namespace
 

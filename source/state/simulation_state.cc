@@ -1,10 +1,9 @@
 #include <cmath>
 #include <deepdraw/io/binary_stream.h>
+#include <deepdraw/io/printable_text.h>
 #include <deepdraw/state/simulation_state.h>
-#include <iomanip>
 #include <istream>
 #include <ostream>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -65,14 +64,6 @@ namespace deepdraw
         io::read_bytes(stream, values, n * sizeof(double), source);
       }
 
-      std::string
-      to_string(const double value)
-      {
-        std::ostringstream text;
-        text << std::setprecision(12) << value;
-        return text.str();
-      }
-
       // Every value of a block must be finite (a damaged checkpoint of a
       // format without a checksum).
       void
@@ -83,7 +74,7 @@ namespace deepdraw
         for (std::size_t i = 0; i < n; ++i)
           if (!std::isfinite(values[i]))
             throw std::runtime_error(what + ": value " + std::to_string(i)
-                                     + " is " + to_string(values[i])
+                                     + " is " + io::to_string(values[i])
                                      + ", not a finite number");
       }
 
@@ -163,12 +154,12 @@ namespace deepdraw
         get(stream, state.last_load_increment);
         get(stream, state.increment_number);
         if (!std::isfinite(state.load))
-          throw std::runtime_error("load = " + to_string(state.load)
+          throw std::runtime_error("load = " + io::to_string(state.load)
                                    + " (must be finite)");
         if (!std::isfinite(state.last_load_increment)
             || state.last_load_increment < 0.)
           throw std::runtime_error("last load increment = "
-                                   + to_string(state.last_load_increment)
+                                   + io::to_string(state.last_load_increment)
                                    + " (must be finite and not negative)");
       }
 
@@ -233,7 +224,7 @@ namespace deepdraw
         if (!std::isfinite(state.stage_force_scale)
             || state.stage_force_scale < 0.)
           throw std::runtime_error("stage force scale = "
-                                   + to_string(state.stage_force_scale)
+                                   + io::to_string(state.stage_force_scale)
                                    + " (must be finite and not negative)");
         get_doubles(stream, state.contact.tool_origin, "tool origins");
         get_doubles(stream,
@@ -349,7 +340,7 @@ namespace deepdraw
       get(stream, next_increment);
       if (!std::isfinite(next_increment) || !(next_increment > 0.))
         throw std::runtime_error(
-          "next increment = " + to_string(next_increment)
+          "next increment = " + io::to_string(next_increment)
           + " (the load stepping's next step must be positive and finite)");
       read_contact(stream, contact);
       read_refinements(stream, refinements);
@@ -370,7 +361,7 @@ namespace deepdraw
       get(stream, end_force_scale);
       if (!std::isfinite(end_force_scale) || end_force_scale < -1.)
         throw std::runtime_error("end force scale = "
-                                 + to_string(end_force_scale)
+                                 + io::to_string(end_force_scale)
                                  + " (must be finite, -1 or more)");
       get_vector(stream, release_loads, "release loads");
       const std::size_t n_supports

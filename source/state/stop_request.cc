@@ -18,12 +18,17 @@ namespace deepdraw
 
 
     void
-    install_stop_handlers()
+    install_stop_handlers(const bool interrupt_waits)
     {
       // SIGHUP (the terminal closed) and SIGQUIT (Ctrl+backslash) end a run as
-      // SIGTERM does, with a checkpoint (D163).
+      // SIGTERM does, with a checkpoint (D163). SA_RESTART as std::signal
+      // sets it, unless waits are to be interrupted.
+      struct sigaction action = {};
+      action.sa_handler       = record_signal;
+      action.sa_flags         = interrupt_waits ? 0 : SA_RESTART;
+      sigemptyset(&action.sa_mask);
       for (const int signal_number : {SIGINT, SIGTERM, SIGHUP, SIGQUIT})
-        std::signal(signal_number, record_signal);
+        sigaction(signal_number, &action, nullptr);
     }
 
 

@@ -15,6 +15,7 @@ Each class is a function of the repository root returning its cases.
 import os
 import subprocess
 
+from hostile_files_cases import special_file_cases
 from hostile_formability_cases import formability_cases
 from hostile_prm import BAR, CUP, bar, cup, sub
 from hostile_stage_cases import stage, stage_and_output_cases
@@ -58,7 +59,8 @@ def files_cases(source):
              messages=["adir: is a directory"]),
         dict(name="include_device",
              files={"case.prm": "include /dev/zero\n"}, exit=2,
-             messages=["/dev/zero: is not a regular file"]),
+             messages=["/dev/zero: is a character device, not a regular "
+                       "file"]),
         dict(name="include_binary",
              files={"case.prm": "include blob.prm\n",
                     "blob.prm": bytes(range(256)) * 4}, exit=2,
@@ -79,11 +81,12 @@ def files_cases(source):
              files={"case.prm": b"# r\xe9sum\xe9\n" + BAR.encode()}, exit=2,
              messages=["case.prm:1: not a text file (byte 0xE9"]),
         dict(name="prm_fifo", setup=fifo, args=["fifo.prm"], exit=2,
-             messages=["fifo.prm: is not a regular file"]),
+             messages=["fifo.prm: is a named pipe, not a regular file"]),
         dict(name="prm_too_large", setup=sparse, args=["huge.prm"], exit=2,
              messages=["more than the 16 MB"]),
         dict(name="prm_dev_null", args=["/dev/null"], exit=2,
-             messages=["/dev/null: is not a regular file"]),
+             messages=["/dev/null: is a character device, not a regular "
+                       "file"]),
         dict(name="prm_not_prm_ending", files={"case.txt": BAR},
              args=["case.txt"], exit=2, messages=["must end in .prm"]),
         dict(name="multiple_run_braces",
@@ -499,4 +502,5 @@ CLASSES = {"stages_and_outputs": stage_and_output_cases,
            "formability": formability_cases,
            "files": files_cases, "command_line": command_line_cases,
            "expressions": expression_cases, "tool_files": tool_file_cases,
-           "run_time": run_time_cases, "blank_files": blank_file_cases}
+           "run_time": run_time_cases, "blank_files": blank_file_cases,
+           "special_files": special_file_cases}

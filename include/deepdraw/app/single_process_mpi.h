@@ -31,6 +31,12 @@ namespace deepdraw
     private:
       std::string session_base;
     };
+
+    // Open MPI's start-up aborts with pages of text when the working
+    // directory has been deleted (D167): the reason, to be checked before
+    // MPI_Init, or "" if getcwd(3) works.
+    std::string
+    working_directory_problem();
   } // namespace app
 } // namespace deepdraw
 

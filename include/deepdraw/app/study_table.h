@@ -18,7 +18,9 @@ namespace deepdraw
       // The values of the varied parameters, in the order of the options.
       std::vector<std::string> values;
       bool                     failed = false;
-      RunResults               results;
+      // Stopped by a signal to the study (D179): status "interrupted".
+      bool       interrupted = false;
+      RunResults results;
       // Largest in-plane element size over the layer thickness.
       OptionalValue aspect_ratio;
       double        wall_seconds = 0.;

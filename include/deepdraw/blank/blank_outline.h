@@ -6,6 +6,7 @@
 #ifndef deepdraw_blank_blank_outline_h
 #define deepdraw_blank_blank_outline_h
 
+#include <cstddef>
 #include <deal.II/base/point.h>
 #include <string>
 #include <vector>
@@ -15,6 +16,12 @@ namespace deepdraw
   namespace blank
   {
     using namespace dealii;
+
+    // Limits of an outline file (D169): its corners, and how far from the
+    // origin they lie (mm; the upper one is BlankGeometry::max_extent).
+    constexpr std::size_t max_outline_corners = 100000;
+    constexpr double      max_outline_radius  = 1e4;
+    constexpr double      min_outline_radius  = 1e-3;
 
     class BlankOutline
     {
@@ -29,9 +36,11 @@ namespace deepdraw
       // The polygon of an outline file: one "x y" per line (mm), '#' starts
       // a comment, blank lines are skipped, the last point joins the first
       // (a repeated first point at the end is dropped). Throws InputError
-      // "FILE:LINE: ..." on a line that is not two finite numbers, fewer
-      // than three points, two consecutive equal points, crossing edges, or
-      // an outline that is not star-shaped about the origin.
+      // "FILE:LINE: ..." on a line that is not two finite numbers, more
+      // than max_outline_corners or fewer than three points, two
+      // consecutive equal points, a corner beyond max_outline_radius or all
+      // within min_outline_radius, crossing edges, or an outline that is
+      // not star-shaped about the origin.
       static BlankOutline
       read(const std::string &filename);
 

@@ -113,10 +113,10 @@ namespace deepdraw
       // Input checks that need the blank and the run (D50): Search distance
       // at most blank_diagonal; in every stage, every translation of a tool
       // that takes part finite and within +-length_bound (mm), a stage's
-      // own translation 0 at its start, and every tool force finite and at
-      // most max_force, at the stage's check loads (process::Stage::
-      // check_loads). Throws InputError naming the parameter, the value and
-      // the load.
+      // own translation 0 at its start, and every tool force finite, at
+      // most max_force and positive (D176), at the stage's check loads
+      // (process::Stage::check_loads). Throws InputError naming the
+      // parameter, the value and the load.
       void
       check_values(const std::vector<process::Stage> &stages,
                    double                             blank_diagonal,

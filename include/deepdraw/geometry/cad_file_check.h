@@ -5,6 +5,8 @@
 // S, G, D, P or T in column 73 and ends with the terminate section, which
 // counts the lines of the others (IGES 5.3 §2.2.5). A file cut short fails
 // here with a clear message; OpenCASCADE's IGES reader may crash on one.
+// A STEP file may nest parentheses at most max_step_nesting deep (D165):
+// OpenCASCADE's reader overflows its stack on deeper ones.
 #ifndef deepdraw_geometry_cad_file_check_h
 #define deepdraw_geometry_cad_file_check_h
 
@@ -12,6 +14,8 @@
 
 namespace deepdraw::geometry
 {
+  constexpr unsigned int max_step_nesting = 100;
+
   // Throws InputError "<filename>: ..." if the frame is broken.
   void
   check_step_frame(const std::string &filename);

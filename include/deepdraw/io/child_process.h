@@ -19,14 +19,17 @@ namespace deepdraw
 
     // Starts program with arguments (argv[0] included; search_path: in
     // PATH) and waits for it; stdin from /dev/null. The exit code, or -1
-    // (killed: *signal set; not started: *error).
+    // (killed: *signal set; not started: *error). If the wait is
+    // interrupted and stop_signal() is not 0, that signal is passed on to
+    // the child (once), which then ends as it does on it (D179).
     int
     spawn_and_wait(const std::string              &program,
                    bool                            search_path,
                    const std::vector<std::string> &arguments,
                    const Redirections             &redirections,
                    int                            *error,
-                   int                            *signal);
+                   int                            *signal,
+                   int (*stop_signal)() = nullptr);
 
     // Runs program (searched in PATH) with arguments in directory, its
     // output to log_file; returns its exit code, or -1 if it could not be

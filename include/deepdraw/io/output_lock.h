@@ -35,6 +35,11 @@ namespace deepdraw
               const std::string &parameter,
               bool               quiet);
 
+      // For --check (D179): throws the InputError of acquire() if a living
+      // process of this host holds the lock of `directory`; writes nothing.
+      static void
+      check_free(const std::string &directory, const std::string &parameter);
+
       // Removes the lock file and ends the lock; nothing if none is held.
       void
       release();

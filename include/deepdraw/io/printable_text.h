@@ -17,6 +17,10 @@ namespace deepdraw
     std::string
     one_line(const std::string &text, std::size_t max_length = 2000);
 
+    // A number in messages: 12 significant digits, the shortest form.
+    std::string
+    to_string(double value);
+
     // deal.II's exception text without its source-location preamble and
     // stack trace, as one_line().
     std::string

@@ -3,7 +3,8 @@
 // file (not a directory, device or pipe), readable, at most
 // max_text_file_size bytes, and text (UTF-8 without control characters
 // other than tab, newline, carriage return and form feed), so that a
-// binary file is rejected without its bytes reaching the terminal.
+// binary file is rejected without its bytes reaching the terminal. A
+// leading UTF-8 byte-order mark is dropped (D175).
 #ifndef deepdraw_io_text_file_h
 #define deepdraw_io_text_file_h
 

@@ -10,6 +10,7 @@
 #include <deal.II/lac/vector.h>
 #include <deepdraw/solver/pattern_snapshot.h>
 #include <dmumps_c.h>
+#include <stdexcept>
 #include <vector>
 
 namespace deepdraw
@@ -17,6 +18,16 @@ namespace deepdraw
   namespace solver
   {
     using namespace dealii;
+
+    // MUMPS failed for want of memory or workspace, not because of the
+    // matrix (INFOG(1) = -7, -8, -9, -11 to -15, -17, -19, -20): a smaller
+    // load increment needs as much, so the run stops instead of cutting
+    // back (D177).
+    class MumpsMemoryError : public std::runtime_error
+    {
+    public:
+      using std::runtime_error::runtime_error;
+    };
 
     class MumpsFactorization
     {
@@ -33,7 +44,8 @@ namespace deepdraw
 
       // LU factorisation of matrix, with the analysis of the last call if
       // the pattern is the same. Throws std::runtime_error (with MUMPS'
-      // INFOG(1), INFOG(2)) if the matrix is singular.
+      // INFOG(1), INFOG(2)) if the matrix is singular, MumpsMemoryError if
+      // memory or workspace ran out.
       void
       factorize(const SparseMatrix<double> &matrix);
       // Solves with the last factorisation for the columns of `rhs` (one

@@ -10,9 +10,11 @@ namespace deepdraw
 {
   namespace state
   {
-    // Installs the handlers for SIGINT, SIGTERM, SIGHUP and SIGQUIT.
+    // Installs the handlers for SIGINT, SIGTERM, SIGHUP and SIGQUIT. With
+    // interrupt_waits a signal ends a waitpid(2) with EINTR instead of
+    // restarting it (a study passes the signal on to its run, D179).
     void
-    install_stop_handlers();
+    install_stop_handlers(bool interrupt_waits = false);
     // The signal received, 0 if none.
     int
     requested_stop_signal();
