@@ -143,9 +143,19 @@ namespace deepdraw
         begin_stage(committed.stage + 1);
         console.stage(*view);
       }
-      console.finished(*view,
-                       wall_timer.wall_time(),
-                       postprocessors.summaries());
+      std::vector<std::string> summaries = postprocessors.summaries();
+      if (parameters.linear_solver.reuse_factorization)
+      {
+        // This process's counts (a resumed run's since its resume).
+        const auto statistics = model->linear_system().statistics();
+        summaries.push_back(
+          "linear solver: " + std::to_string(statistics.factorizations)
+          + " factorisations, " + std::to_string(statistics.reused_solves)
+          + " solves with a kept factorisation ("
+          + std::to_string(statistics.gmres_iterations)
+          + " GMRES iterations in all)");
+      }
+      console.finished(*view, wall_timer.wall_time(), summaries);
     }
 
 

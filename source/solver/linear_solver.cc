@@ -1,17 +1,10 @@
-#include <Amesos_Klu.h>
-#include <Epetra_CrsMatrix.h>
-#include <Epetra_LinearProblem.h>
-#include <Epetra_Vector.h>
 #include <algorithm>
-#include <array>
-#include <deal.II/base/parallel.h>
-#include <deal.II/lac/full_matrix.h>
-#include <deal.II/lac/sparse_matrix.h>
-#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <cmath>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
+#include <deepdraw/io/input_error.h>
+#include <deepdraw/solver/bordered_factorization.h>
 #include <deepdraw/solver/linear_solver.h>
-#include <deepdraw/solver/mumps_factorization.h>
-#include <deepdraw/solver/umfpack_factorization.h>
-#include <mutex>
 #include <stdexcept>
 
 namespace deepdraw
@@ -52,6 +45,35 @@ namespace deepdraw
         "positions of force-controlled tools, and the Newton step is the "
         "same (doc/decisions.md D90). Nodes touching two tools at once "
         "fall back to the whole system for that solve.");
+      prm.declare_entry(
+        "Reuse factorisation",
+        "false",
+        Patterns::Bool(),
+        "Within an increment, solve each Newton system after the first by "
+        "GMRES preconditioned with the last factorisation, only as exactly "
+        "as Newton needs (Eisenstat-Walker forcing term), and factorise "
+        "only when GMRES does not get there in `Reuse iterations` "
+        "(doc/decisions.md D185). The converged increments are the same "
+        "to the Newton tolerances.");
+      prm.declare_entry("Forcing term",
+                        "0.1",
+                        Patterns::Double(1e-12, 0.9),
+                        "Largest relative linear residual |b - A x| / |b| "
+                        "at which GMRES with a kept factorisation stops; "
+                        "the Eisenstat-Walker term tightens it as Newton "
+                        "converges, down to Smallest forcing term (D185).");
+      prm.declare_entry("Smallest forcing term",
+                        "0.1",
+                        Patterns::Double(1e-12, 0.9),
+                        "Lower bound of the Eisenstat-Walker forcing term. "
+                        "Equal to Forcing term by default: tightening cost "
+                        "more factorisations than it saved Newton "
+                        "iterations on the square cup (D185).");
+      prm.declare_entry("Reuse iterations",
+                        "10",
+                        Patterns::Integer(1, 1000),
+                        "GMRES iterations with a kept factorisation before "
+                        "the system is factorised afresh (D185).");
       prm.leave_subsection();
     }
 
@@ -60,365 +82,27 @@ namespace deepdraw
     LinearSolverParameters::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Linear solver");
-      type                 = prm.get("Type");
-      leave_out_decoupled  = prm.get_bool("Leave out decoupled unknowns");
-      condense_multipliers = prm.get_bool("Condense contact multipliers");
+      type                  = prm.get("Type");
+      leave_out_decoupled   = prm.get_bool("Leave out decoupled unknowns");
+      condense_multipliers  = prm.get_bool("Condense contact multipliers");
+      reuse_factorization   = prm.get_bool("Reuse factorisation");
+      forcing_term          = prm.get_double("Forcing term");
+      smallest_forcing_term = prm.get_double("Smallest forcing term");
+      if (smallest_forcing_term > forcing_term)
+        throw InputError("Linear solver/Smallest forcing term = "
+                         + prm.get("Smallest forcing term")
+                         + " is larger than Linear solver/Forcing term = "
+                         + prm.get("Forcing term")
+                         + ": allowed is at most the forcing term");
+      reuse_iterations = prm.get_integer("Reuse iterations");
       prm.leave_subsection();
-    }
-
-
-    struct LinearSolver::Implementation
-    {
-      // Factorises `matrix` with the chosen package; back_substitute() then
-      // solves with it for any number of right-hand sides.
-      void
-      factorize(const std::string &type, const SparseMatrix<double> &matrix);
-      void
-      back_substitute(const Vector<double> &rhs, Vector<double> &solution);
-      // Solves for each column in place (MUMPS: one pass through the
-      // factors for all of them).
-      void
-      back_substitute(std::vector<Vector<double>> &columns);
-
-      std::string type;
-      // MUMPS scales rows and columns (the whole system, whose multiplier
-      // rows are scaled unlike the displacements); not the condensed one.
-      bool                 scale_matrix = true;
-      UmfpackFactorization umfpack;
-      // Made on first use: MUMPS needs MPI, which not every caller has.
-      std::unique_ptr<MumpsFactorization>   mumps;
-      TrilinosWrappers::SparseMatrix        trilinos_matrix;
-      std::unique_ptr<Epetra_Vector>        epetra_rhs, epetra_solution;
-      std::unique_ptr<Epetra_LinearProblem> epetra_problem;
-      std::unique_ptr<Amesos_BaseSolver>    amesos;
-
-      // The reduced matrix M: without the bordered unknowns and the
-      // decoupled unknowns left out (role). Its pattern is rebuilt only
-      // when the full pattern or the bordered set changes, or an unknown
-      // left out is no longer decoupled (see LinearSolver::solve).
-      enum Role : unsigned char
-      {
-        kept,
-        bordered,
-        left_out
-      };
-      // Rebuilds role, reduced_index and the reduced pattern if needed.
-      void
-      update_reduction(const SparsityPattern                      &pattern,
-                       const std::vector<types::global_dof_index> &bordered,
-                       const std::vector<types::global_dof_index> &decoupled);
-      void
-      build_reduction(const SparsityPattern                      &pattern,
-                      const std::vector<types::global_dof_index> &bordered);
-      // Copies the matrix into reduced_matrix and the border blocks; false
-      // (and the offending unknowns kept from now on) if an unknown left
-      // out has a nonzero off-diagonal entry.
-      bool
-      copy_reduced(const SparseMatrix<double> &matrix);
-      // Rows [begin, end) of copy_reduced; the unknowns found coupled are
-      // appended to `coupled`.
-      void
-      copy_reduced_rows(const SparseMatrix<double>           &matrix,
-                        types::global_dof_index               begin,
-                        types::global_dof_index               end,
-                        std::vector<types::global_dof_index> &coupled);
-
-      const SparsityPattern               *full_pattern  = nullptr;
-      std::size_t                          full_nonzeros = 0;
-      std::vector<types::global_dof_index> bordered_of_pattern;
-      std::vector<Role>                    role;
-      std::vector<bool>                    is_decoupled;
-      std::vector<types::global_dof_index> reduced_index;
-      std::vector<int>                     border_position;
-      SparsityPattern                      reduced_pattern;
-      SparseMatrix<double>                 reduced_matrix;
-      // A = [M C; D E] in the bordered unknowns b (columns of C, rows of D).
-      std::vector<Vector<double>> border_columns, border_rows;
-      FullMatrix<double>          corner;
-      LinearSolver::Statistics    statistics;
-      bool                        reduction_reset = false;
-      // Unknowns the current reduction leaves out.
-      types::global_dof_index n_left_out = 0;
-    };
-
-
-    void
-    LinearSolver::Implementation::factorize(const std::string          &type,
-                                            const SparseMatrix<double> &matrix)
-    {
-      this->type = type;
-      if (type == "UMFPACK")
-      {
-        umfpack.factorize(matrix);
-        return;
-      }
-      if (type == "MUMPS")
-      {
-        if (mumps == nullptr)
-          mumps = std::make_unique<MumpsFactorization>(scale_matrix);
-        mumps->factorize(matrix);
-        return;
-      }
-      // KLU through Amesos. The old solver refers to the old problem and
-      // matrix: release it first.
-      amesos.reset();
-      // A fresh copy: reinit() of a filled matrix keeps its old pattern,
-      // and entries that were zero then (open contact pairs) were lost.
-      trilinos_matrix.clear();
-      trilinos_matrix.reinit(matrix);
-      const Epetra_CrsMatrix &epetra = trilinos_matrix.trilinos_matrix();
-      epetra_rhs      = std::make_unique<Epetra_Vector>(epetra.RangeMap());
-      epetra_solution = std::make_unique<Epetra_Vector>(epetra.DomainMap());
-      epetra_problem
-        = std::make_unique<Epetra_LinearProblem>(const_cast<Epetra_CrsMatrix *>(
-                                                   &epetra),
-                                                 epetra_solution.get(),
-                                                 epetra_rhs.get());
-      amesos = std::make_unique<Amesos_Klu>(*epetra_problem);
-      if (amesos->SymbolicFactorization() != 0
-          || amesos->NumericFactorization() != 0)
-        throw std::runtime_error("Amesos " + type
-                                 + " could not factorise the matrix");
-    }
-
-
-    void
-    LinearSolver::Implementation::back_substitute(const Vector<double> &rhs,
-                                                  Vector<double> &solution)
-    {
-      solution.reinit(rhs.size());
-      if (type == "UMFPACK")
-      {
-        umfpack.solve(rhs, solution);
-        return;
-      }
-      if (type == "MUMPS")
-      {
-        mumps->solve(rhs, solution);
-        return;
-      }
-      for (unsigned int i = 0; i < rhs.size(); ++i)
-        (*epetra_rhs)[i] = rhs[i];
-      if (amesos->Solve() != 0)
-        throw std::runtime_error("Amesos " + type + " could not solve");
-      for (unsigned int i = 0; i < solution.size(); ++i)
-        solution[i] = (*epetra_solution)[i];
-    }
-
-
-    void
-    LinearSolver::Implementation::back_substitute(
-      std::vector<Vector<double>> &columns)
-    {
-      if (type == "MUMPS")
-      {
-        mumps->solve(columns);
-        return;
-      }
-      Vector<double> solution;
-      for (Vector<double> &column : columns)
-      {
-        back_substitute(column, solution);
-        column.swap(solution);
-      }
-    }
-
-
-    namespace
-    {
-      // The reduced pattern is also rebuilt, to shrink the factorised
-      // matrix, when more than this fraction of the unknowns it keeps has
-      // become decoupled (contact pairs that opened).
-      constexpr double shrink_fraction = 0.25;
-    } // namespace
-
-
-    void
-    LinearSolver::Implementation::update_reduction(
-      const SparsityPattern                      &pattern,
-      const std::vector<types::global_dof_index> &bordered,
-      const std::vector<types::global_dof_index> &decoupled)
-    {
-      const types::global_dof_index n = pattern.n_rows();
-      is_decoupled.assign(n, false);
-      for (const auto i : decoupled)
-        is_decoupled[i] = true;
-      bool rebuild
-        = full_pattern != &pattern
-          || full_nonzeros != pattern.n_nonzero_elements()
-          || bordered_of_pattern != bordered || role.size() != n
-          || (reduction_reset && (n_left_out > 0 || !decoupled.empty()));
-      // A reset cannot change a reduction that leaves nothing out before or
-      // after (that of the condensed system): it is kept (D98).
-      reduction_reset                = false;
-      types::global_dof_index n_kept = 0, n_kept_decoupled = 0;
-      for (types::global_dof_index i = 0; i < n && !rebuild; ++i)
-        if (role[i] == left_out && !is_decoupled[i])
-          rebuild = true;
-        else if (role[i] == kept)
-        {
-          ++n_kept;
-          n_kept_decoupled += is_decoupled[i];
-        }
-      if (rebuild || n_kept_decoupled > shrink_fraction * n_kept)
-      {
-        full_pattern        = &pattern;
-        full_nonzeros       = pattern.n_nonzero_elements();
-        bordered_of_pattern = bordered;
-        build_reduction(pattern, bordered);
-      }
-    }
-
-
-    void
-    LinearSolver::Implementation::build_reduction(
-      const SparsityPattern                      &pattern,
-      const std::vector<types::global_dof_index> &bordered)
-    {
-      const types::global_dof_index n = pattern.n_rows();
-      role.assign(n, kept);
-      n_left_out = 0;
-      for (types::global_dof_index i = 0; i < n; ++i)
-        if (is_decoupled[i])
-        {
-          role[i] = left_out;
-          ++n_left_out;
-        }
-      border_position.assign(n, -1);
-      for (unsigned int k = 0; k < bordered.size(); ++k)
-      {
-        role[bordered[k]]            = Role::bordered;
-        border_position[bordered[k]] = k;
-      }
-      reduced_index.assign(n, numbers::invalid_dof_index);
-      types::global_dof_index n_m = 0;
-      for (types::global_dof_index i = 0; i < n; ++i)
-        if (role[i] == kept)
-          reduced_index[i] = n_m++;
-
-      std::vector<unsigned int> row_lengths(n_m, 0);
-      for (types::global_dof_index i = 0; i < n; ++i)
-        if (role[i] == kept)
-          for (auto entry = pattern.begin(i); entry != pattern.end(i); ++entry)
-            row_lengths[reduced_index[i]] += role[entry->column()] == kept;
-      reduced_pattern.reinit(n_m, n_m, row_lengths);
-      std::vector<types::global_dof_index> columns;
-      for (types::global_dof_index i = 0; i < n; ++i)
-        if (role[i] == kept)
-        {
-          columns.clear();
-          for (auto entry = pattern.begin(i); entry != pattern.end(i); ++entry)
-            if (role[entry->column()] == kept)
-              columns.push_back(reduced_index[entry->column()]);
-          std::sort(columns.begin(), columns.end());
-          reduced_pattern.add_entries(reduced_index[i],
-                                      columns.begin(),
-                                      columns.end(),
-                                      true);
-        }
-      reduced_pattern.compress();
-      reduced_matrix.reinit(reduced_pattern);
-      ++statistics.reductions;
-    }
-
-
-    bool
-    LinearSolver::Implementation::copy_reduced(
-      const SparseMatrix<double> &matrix)
-    {
-      const types::global_dof_index n   = matrix.m();
-      const types::global_dof_index n_m = reduced_pattern.n_rows();
-      const unsigned int            n_b = bordered_of_pattern.size();
-      border_columns.assign(n_b, Vector<double>(n_m));
-      border_rows.assign(n_b, Vector<double>(n_m));
-      corner.reinit(n_b, n_b);
-      std::vector<types::global_dof_index> coupled;
-      std::mutex                           coupled_mutex;
-      // The rows are independent: both cores (D98).
-      parallel::apply_to_subranges(
-        types::global_dof_index(0),
-        n,
-        [&](const types::global_dof_index begin,
-            const types::global_dof_index end)
-        {
-          std::vector<types::global_dof_index> found;
-          copy_reduced_rows(matrix, begin, end, found);
-          if (!found.empty())
-          {
-            std::lock_guard<std::mutex> lock(coupled_mutex);
-            coupled.insert(coupled.end(), found.begin(), found.end());
-          }
-        },
-        2048);
-      if (coupled.empty())
-        return true;
-      // Not decoupled after all: keep these from now on.
-      for (const auto j : coupled)
-        is_decoupled[j] = false;
-      build_reduction(*full_pattern, bordered_of_pattern);
-      return false;
-    }
-
-
-    void
-    LinearSolver::Implementation::copy_reduced_rows(
-      const SparseMatrix<double>           &matrix,
-      const types::global_dof_index         begin,
-      const types::global_dof_index         end,
-      std::vector<types::global_dof_index> &coupled)
-    {
-      // The reduced rows keep the order of the full rows (diagonal first,
-      // then ascending columns, and the renumbering is monotone): copy in
-      // step instead of searching each entry.
-      for (types::global_dof_index i = begin; i < end; ++i)
-      {
-        const Role role_i = role[i];
-        if (role_i == left_out)
-        {
-          for (auto entry = matrix.begin(i); entry != matrix.end(i); ++entry)
-            if (entry->column() != i && entry->value() != 0.)
-            {
-              coupled.push_back(i);
-              break;
-            }
-          continue;
-        }
-        const int bi            = border_position[i];
-        auto      reduced_entry = role_i == kept
-                                    ? reduced_matrix.begin(reduced_index[i])
-                                    : reduced_matrix.end();
-        for (auto entry = matrix.begin(i); entry != matrix.end(i); ++entry)
-        {
-          const auto   j      = entry->column();
-          const double value  = entry->value();
-          const Role   role_j = role[j];
-          if (role_j == left_out)
-          {
-            if (value != 0.)
-              coupled.push_back(j);
-          }
-          else if (role_i == kept && role_j == kept)
-          {
-            AssertThrow(reduced_entry->column() == reduced_index[j],
-                        ExcInternalError());
-            reduced_entry->value() = value;
-            ++reduced_entry;
-          }
-          else if (role_i == kept)
-            border_columns[border_position[j]][reduced_index[i]] = value;
-          else if (role_j == kept)
-            border_rows[bi][reduced_index[j]] = value;
-          else
-            corner(bi, border_position[j]) = value;
-        }
-      }
     }
 
 
     LinearSolver::LinearSolver(const LinearSolverParameters &parameters)
         : parameters(parameters)
-        , implementation(std::make_unique<Implementation>())
-        , condensed_implementation(std::make_unique<Implementation>())
+        , implementation(std::make_unique<BorderedFactorization>())
+        , condensed_implementation(std::make_unique<BorderedFactorization>())
     {
       // Displacements only, in N/mm throughout: well scaled (D98).
       condensed_implementation->scale_matrix = false;
@@ -431,12 +115,16 @@ namespace deepdraw
     void
     LinearSolver::reset_reduction()
     {
-      for (Implementation *data :
+      for (BorderedFactorization *data :
            {implementation.get(), condensed_implementation.get()})
       {
         data->reduction_reset = true;
         data->umfpack.forget_analysis();
+        // Each increment's first solve factorises (a resumed run repeats
+        // the same arithmetic, D55).
+        data->kept_size = 0;
       }
+      previous_residual_norm = 0.;
     }
 
 
@@ -445,7 +133,7 @@ namespace deepdraw
     {
       // Both systems together (the condensed one and the whole one).
       Statistics total = solve_statistics;
-      for (const Implementation *data :
+      for (const BorderedFactorization *data :
            {implementation.get(), condensed_implementation.get()})
       {
         total.factorizations += data->statistics.factorizations;
@@ -475,6 +163,7 @@ namespace deepdraw
       condensation = std::make_unique<MultiplierCondensation>();
       // A new condensed pattern, possibly at the old one's address.
       condensed_implementation->full_pattern = nullptr;
+      condensed_implementation->kept_size    = 0;
       condensation->initialize(pattern,
                                n_displacements,
                                blocks,
@@ -491,12 +180,14 @@ namespace deepdraw
                         const std::vector<types::global_dof_index> &decoupled)
     {
       solve_statistics.unknowns = matrix.m();
+      if (parameters.reuse_factorization)
+        update_forcing_term(rhs.l2_norm());
       if (condensation != nullptr && condensation->condense(matrix, rhs))
       {
         // The multipliers eliminated exactly (D90): the factorised matrix
         // is the displacement block, bordered by the tool positions.
-        Implementation &condensed = *condensed_implementation;
-        Vector<double>  condensed_solution;
+        BorderedFactorization &condensed = *condensed_implementation;
+        Vector<double>         condensed_solution;
         solve_with(condensed,
                    condensation->matrix(),
                    condensation->rhs(),
@@ -517,81 +208,24 @@ namespace deepdraw
 
     void
     LinearSolver::solve_with(
-      Implementation                             &data,
+      BorderedFactorization                      &data,
       const SparseMatrix<double>                 &matrix,
       const Vector<double>                       &rhs,
       Vector<double>                             &solution,
       const std::vector<types::global_dof_index> &bordered,
       const std::vector<types::global_dof_index> &decoupled)
     {
-      const types::global_dof_index n = matrix.m();
-      ++data.statistics.factorizations;
-      data.statistics.unknowns = n;
+      if (parameters.reuse_factorization && data.has_kept_inverse(matrix.m())
+          && solve_with_kept_factors(data, matrix, rhs, solution))
+        return;
       try
       {
-        if (bordered.empty() && decoupled.empty())
-        {
-          data.statistics.factorized_unknowns = n;
-          data.factorize(parameters.type, matrix);
-          ++data.statistics.numeric_factorizations;
-          data.back_substitute(rhs, solution);
-          return;
-        }
-
-        data.update_reduction(matrix.get_sparsity_pattern(),
-                              bordered,
-                              decoupled);
-        while (!data.copy_reduced(matrix))
-        {
-        }
-        const types::global_dof_index n_m   = data.reduced_pattern.n_rows();
-        const unsigned int            n_b   = bordered.size();
-        data.statistics.factorized_unknowns = n_m;
-        data.factorize(parameters.type, data.reduced_matrix);
-        ++data.statistics.numeric_factorizations;
-        // columns: f, then C (the border columns); M^-1 of all at once.
-        std::vector<Vector<double>> columns(1, Vector<double>(n_m));
-        for (types::global_dof_index i = 0; i < n; ++i)
-          if (data.role[i] == Implementation::kept)
-            columns[0][data.reduced_index[i]] = rhs[i];
-        columns.insert(columns.end(),
-                       data.border_columns.begin(),
-                       data.border_columns.end());
-        data.back_substitute(columns);
-        Vector<double> y, z(n_b);
-        y.swap(columns[0]);
-        // S = E - D M^-1 C, z = S^-1 (f_b - D M^-1 f), x = M^-1 f - M^-1 C z.
-        if (n_b > 0)
-        {
-          // M^-1 C, column by column.
-          const Vector<double> *inverse_columns = columns.data() + 1;
-          FullMatrix<double>    schur(data.corner);
-          Vector<double>        border_rhs(n_b);
-          for (unsigned int k = 0; k < n_b; ++k)
-            border_rhs[k] = rhs[bordered[k]] - data.border_rows[k] * y;
-          for (unsigned int k = 0; k < n_b; ++k)
-            for (unsigned int l = 0; l < n_b; ++l)
-              schur(k, l) -= data.border_rows[k] * inverse_columns[l];
-          schur.gauss_jordan();
-          schur.vmult(z, border_rhs);
-          for (unsigned int k = 0; k < n_b; ++k)
-            y.add(-z[k], inverse_columns[k]);
-        }
-        // A decoupled unknown's row is its diagonal alone.
-        solution.reinit(n);
-        for (types::global_dof_index i = 0; i < n; ++i)
-          switch (data.role[i])
-          {
-            case Implementation::kept:
-              solution[i] = y[data.reduced_index[i]];
-              break;
-            case Implementation::bordered:
-              solution[i] = z[data.border_position[i]];
-              break;
-            case Implementation::left_out:
-              solution[i] = rhs[i] / matrix.diag_element(i);
-              break;
-          }
+        data.factorize_and_solve(parameters.type,
+                                 matrix,
+                                 rhs,
+                                 solution,
+                                 bordered,
+                                 decoupled);
       }
       catch (const MumpsMemoryError &)
       {
@@ -605,6 +239,118 @@ namespace deepdraw
             "rigid-body motions prevented by the boundary conditions?): "
           + error.what());
       }
+    }
+
+
+    namespace
+    {
+      // GMRES's control that also gives up early: when the mean reduction
+      // per iteration so far, continued to the last allowed iteration,
+      // would not reach the target (a factorisation is then cheaper than
+      // the iterations left; D185).
+      class ReuseControl : public SolverControl
+      {
+      public:
+        ReuseControl(const unsigned int n, const double target)
+            : SolverControl(n, target, false, false)
+        {
+        }
+
+        State
+        check(const unsigned int step, const double value) override
+        {
+          if (step == 0)
+            initial = value;
+          State state = SolverControl::check(step, value);
+          if (state == iterate && step >= 2 && initial > 0.)
+          {
+            const double rate = std::pow(value / initial, 1. / step);
+            if (value * std::pow(rate, max_steps() - step) > tolerance())
+              state = failure;
+          }
+          return state;
+        }
+
+      private:
+        double initial = 0.;
+      };
+
+      // An earlier matrix's factors as the preconditioner of GMRES.
+      struct KeptInverse
+      {
+        BorderedFactorization *factors;
+
+        void
+        vmult(Vector<double> &dst, const Vector<double> &src) const
+        {
+          factors->apply_kept_inverse(src, dst);
+        }
+      };
+    } // namespace
+
+
+    bool
+    LinearSolver::solve_with_kept_factors(BorderedFactorization      &data,
+                                          const SparseMatrix<double> &matrix,
+                                          const Vector<double>       &rhs,
+                                          Vector<double>             &solution)
+    {
+      // Right preconditioning: GMRES minimises the true residual |b - A x|,
+      // which is also checked afterwards (D185).
+      const double                target = forcing_term * rhs.l2_norm();
+      ReuseControl                control(parameters.reuse_iterations, target);
+      SolverGMRES<Vector<double>> gmres(
+        control,
+        SolverGMRES<Vector<double>>::AdditionalData(parameters.reuse_iterations
+                                                      + 2,
+                                                    true));
+      solution.reinit(matrix.m());
+      bool converged = true;
+      try
+      {
+        gmres.solve(matrix, solution, rhs, KeptInverse{&data});
+      }
+      catch (const SolverControl::NoConvergence &)
+      {
+        converged = false;
+      }
+      catch (const std::exception &)
+      {
+        // The kept factors could not be applied: factorise afresh.
+        converged = false;
+      }
+      solve_statistics.gmres_iterations += control.last_step();
+      if (!converged)
+        return false;
+      Vector<double> residual(matrix.m());
+      if (!(matrix.residual(residual, solution, rhs) <= 1.01 * target))
+        return false;
+      ++solve_statistics.reused_solves;
+      return true;
+    }
+
+
+    void
+    LinearSolver::update_forcing_term(const double residual_norm)
+    {
+      // Eisenstat and Walker (1996), choice 2 with gamma = 0.9 and
+      // alpha = 2, and its safeguard: a Newton step needs the linear
+      // residual below forcing_term |F_k|, tighter as Newton converges,
+      // but not below the smallest forcing term (D185).
+      constexpr double gamma = 0.9;
+      const double     limit = parameters.forcing_term;
+      double           eta   = limit;
+      if (previous_residual_norm > 0.)
+      {
+        const double ratio     = residual_norm / previous_residual_norm;
+        eta                    = gamma * ratio * ratio;
+        const double safeguard = gamma * forcing_term * forcing_term;
+        if (safeguard > 0.1)
+          eta = std::max(eta, safeguard);
+      }
+      forcing_term = std::clamp(eta, parameters.smallest_forcing_term, limit);
+
+      previous_residual_norm = residual_norm;
     }
   } // namespace solver
 } // namespace deepdraw

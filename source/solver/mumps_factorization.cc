@@ -144,19 +144,30 @@ namespace deepdraw
     }
 
 
+    namespace
+    {
+      constexpr int pord_smallest_system = 1000;
+    } // namespace
+
+
     // The orderings Debian's MUMPS has (no METIS or SCOTCH): ICNTL(7) = 0
     // (AMD) and 4 (PORD, MUMPS' own choice without them). Which needs
     // fewer operations depends on the mesh: AMD 13 % fewer on the
     // reference sheet, PORD 11 % fewer on 100 x 100 x 2 (D98). The
     // analysis is cheap against the factorisations it serves (D97), so
     // each is tried and the one with the fewer estimated operations
-    // (RINFOG(1)) kept.
+    // (RINFOG(1)) kept. PORD is not tried on systems below
+    // pord_smallest_system unknowns: on tiny graphs it ends the process
+    // ("no valid number of stages in multisector", a one-cell sheet), and
+    // AMD serves them as well (D186).
     void
     MumpsFactorization::analyse()
     {
       candidates.clear();
       for (const int ordering : {0, 4})
       {
+        if (ordering == 4 && data.n < pord_smallest_system)
+          continue;
         data.icntl[index(7)] = ordering;
         run(1);
         candidates.push_back({ordering, data.rinfog[index(1)]});

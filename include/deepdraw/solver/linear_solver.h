@@ -17,6 +17,8 @@ namespace deepdraw
   {
     using namespace dealii;
 
+    struct BorderedFactorization;
+
     struct LinearSolverParameters
     {
       std::string type = "MUMPS";
@@ -27,6 +29,15 @@ namespace deepdraw
       // The contact multipliers are eliminated exactly before the
       // factorisation (D90).
       bool condense_multipliers = true;
+      // Within an increment, later Newton systems are solved by GMRES with
+      // the increment's last factorisation as right preconditioner, to the
+      // Eisenstat-Walker forcing term (between `smallest_forcing_term` and
+      // `forcing_term`); a system that needs more than `reuse_iterations`
+      // is factorised (D185).
+      bool         reuse_factorization   = false;
+      double       forcing_term          = 0.1;
+      double       smallest_forcing_term = 0.1;
+      unsigned int reuse_iterations      = 10;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -101,27 +112,41 @@ namespace deepdraw
         unsigned int numeric_factorizations = 0;
         // Solves of the condensed system (D90); the rest were whole.
         unsigned int condensed_solves = 0;
+        // Solves by GMRES with kept factors, and its iterations (D185).
+        unsigned int reused_solves    = 0;
+        unsigned int gmres_iterations = 0;
       };
       Statistics
       statistics() const;
 
     private:
-      struct Implementation;
       void
-      solve_with(Implementation                             &data,
+      solve_with(BorderedFactorization                      &data,
                  const SparseMatrix<double>                 &matrix,
                  const Vector<double>                       &rhs,
                  Vector<double>                             &solution,
                  const std::vector<types::global_dof_index> &bordered,
                  const std::vector<types::global_dof_index> &decoupled);
+      // GMRES with data's kept factors to the forcing term; false if it
+      // did not get there (the caller factorises).
+      bool
+      solve_with_kept_factors(BorderedFactorization      &data,
+                              const SparseMatrix<double> &matrix,
+                              const Vector<double>       &rhs,
+                              Vector<double>             &solution);
+      void
+      update_forcing_term(double residual_norm);
 
       LinearSolverParameters parameters;
       // The whole system's factorisation and that of the condensed one,
       // each with its own pattern and ordering.
-      std::unique_ptr<Implementation>         implementation;
-      std::unique_ptr<Implementation>         condensed_implementation;
+      std::unique_ptr<BorderedFactorization>  implementation;
+      std::unique_ptr<BorderedFactorization>  condensed_implementation;
       std::unique_ptr<MultiplierCondensation> condensation;
       Statistics                              solve_statistics;
+      // Eisenstat-Walker: this solve's forcing term and the last |F|.
+      double forcing_term           = 0.;
+      double previous_residual_norm = 0.;
     };
   } // namespace solver
 } // namespace deepdraw

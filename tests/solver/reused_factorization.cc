@@ -1,0 +1,159 @@
+// LinearSolver with `Reuse factorisation` (D185): after the first solve of
+// an increment, a system is solved by right-preconditioned GMRES with the
+// kept factors of the last factorised matrix, to the forcing term, and
+// factorised afresh when GMRES does not get there. Checked on the
+// contact-like saddle-point matrix of linear_solver_decoupled (a chain of
+// displacements, a multiplier per node, a bordered "holder" unknown), with
+// and without the bordered unknown and the decoupled ones left out:
+// - the first solve factorises and is exact (relative residual 1e-12);
+// - a slightly changed matrix (values scaled by up to 2 %) is solved with
+//   the kept factors: no new factorisation, and the true residual
+//   |b - A x| is within the forcing term 0.1 of |b| (the Eisenstat-Walker
+//   term is 0.9 (|b_k| / |b_k-1|)^2 = 0.9 here, capped at 0.1);
+// - a forcing term GMRES cannot reach in its 2 iterations (1e-12 on a
+//   matrix changed by 20 %) falls back to a factorisation, whose solution
+//   is exact again;
+// - after reset_reduction() (an increment's start) the first solve
+//   factorises without trying GMRES.
+#include "contact_like_pattern.h"
+#include "test_utilities.h"
+
+#include <cmath>
+#include <deal.II/base/mpi.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+#include <deepdraw/solver/linear_solver.h>
+#include <string>
+#include <vector>
+
+using namespace dealii;
+using namespace deepdraw_test;
+
+namespace
+{
+  // The matrix of linear_solver_decoupled with every third pair closed,
+  // its values scaled by 1 + change * sin(entry number).
+  void
+  fill(SparseMatrix<double> &A, const double change)
+  {
+    const unsigned int n = (A.m() - 1) / 2;
+    A                    = 0.;
+    for (unsigned int i = 0; i < n; ++i)
+    {
+      const bool closed = i % 3 == 0 && i > 0;
+      A.set(i, i, 2. + 0.1 * i);
+      if (i > 1)
+        A.set(i, i - 1, -1.);
+      if (i > 0 && i + 1 < n)
+        A.set(i, i + 1, -1.);
+      const double coupling = closed ? 1. + 0.01 * i : 0.;
+      A.set(i, n + i, -coupling);
+      A.set(n + i, i, coupling);
+      A.set(n + i, n + i, closed ? 0.3 * (i % 2) : 1e-3);
+      A.set(n + i, 2 * n, closed ? 0.5 : 0.);
+      A.set(2 * n, n + i, closed ? 1. : 0.);
+    }
+    A.set(2 * n, 2 * n, 1.);
+    unsigned int k = 0;
+    for (auto entry = A.begin(); entry != A.end(); ++entry, ++k)
+      entry->value() *= 1. + change * std::sin(1. + k);
+  }
+
+  double
+  relative_residual(const SparseMatrix<double> &A,
+                    const Vector<double>       &x,
+                    const Vector<double>       &b)
+  {
+    Vector<double> r(b.size());
+    return A.residual(r, x, b) / b.l2_norm();
+  }
+} // namespace
+
+int
+main(int argc, char *argv[])
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const unsigned int               n = 30;
+  SparsityPattern                  pattern;
+  make_contact_like_pattern(n, pattern);
+  SparseMatrix<double> A(pattern);
+  Vector<double>       b(2 * n + 1), x;
+  for (unsigned int i = 0; i < b.size(); ++i)
+    b[i] = 1. + std::sin(1. + i);
+
+  for (const bool bordered : {false, true})
+  {
+    const std::vector<types::global_dof_index> border
+      = bordered ? std::vector<types::global_dof_index>{2 * n}
+                 : std::vector<types::global_dof_index>{};
+    // The open pairs' multipliers and the constrained node 0.
+    std::vector<types::global_dof_index> decoupled;
+    if (bordered)
+      for (unsigned int i = 0; i < n; ++i)
+        if (i % 3 != 0 || i == 0)
+          decoupled.push_back(n + i);
+    const std::string name = bordered ? "bordered" : "whole";
+    deepdraw::solver::LinearSolverParameters parameters;
+    parameters.reuse_factorization = true;
+    parameters.forcing_term        = 0.1;
+    parameters.reuse_iterations    = 10;
+    deepdraw::solver::LinearSolver solver(parameters);
+
+    fill(A, 0.);
+    solver.solve(A, b, x, border, decoupled);
+    check_close(name + ": first solve exact",
+                relative_residual(A, x, b),
+                0.,
+                1e-12);
+    check_close(name + ": first solve factorised",
+                solver.statistics().factorizations,
+                1,
+                0);
+
+    fill(A, 0.02);
+    solver.solve(A, b, x, border, decoupled);
+    const auto reused = solver.statistics();
+    check_true(name + ": changed matrix solved with the kept factors",
+               reused.factorizations == 1 && reused.reused_solves == 1);
+    check_true(name + ": by GMRES", reused.gmres_iterations >= 1);
+    // The forcing term, and not much less (GMRES stops as it gets there).
+    const double achieved = relative_residual(A, x, b);
+    check_true(name + ": true residual " + std::to_string(achieved)
+                 + " <= forcing term 0.1",
+               achieved <= 0.1);
+
+    // Fallback: a forcing term out of reach in 2 iterations.
+    deepdraw::solver::LinearSolverParameters strict = parameters;
+    strict.forcing_term                             = 1e-12;
+    strict.reuse_iterations                         = 2;
+    deepdraw::solver::LinearSolver fallback(strict);
+    fill(A, 0.);
+    fallback.solve(A, b, x, border, decoupled);
+    fill(A, 0.2);
+    fallback.solve(A, b, x, border, decoupled);
+    const auto refactorised = fallback.statistics();
+    check_true(name + ": GMRES tried (2 iterations), then factorised",
+               refactorised.gmres_iterations == 2
+                 && refactorised.factorizations == 2
+                 && refactorised.reused_solves == 0);
+    check_close(name + ": fallback exact",
+                relative_residual(A, x, b),
+                0.,
+                1e-12);
+
+    // An increment's start: factorise, no GMRES.
+    solver.reset_reduction();
+    const unsigned int gmres_before = solver.statistics().gmres_iterations;
+    fill(A, 0.05);
+    solver.solve(A, b, x, border, decoupled);
+    check_true(name + ": after reset_reduction() factorised, no GMRES",
+               solver.statistics().factorizations == 2
+                 && solver.statistics().gmres_iterations == gmres_before);
+    check_close(name + ": after reset exact",
+                relative_residual(A, x, b),
+                0.,
+                1e-12);
+  }
+  return summary();
+}
