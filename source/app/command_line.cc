@@ -9,6 +9,7 @@
 #include <deepdraw/app/command_line.h>
 #include <deepdraw/app/commands.h>
 #include <deepdraw/io/input_error.h>
+#include <deepdraw/io/output_directory.h>
 #include <deepdraw/io/output_error.h>
 #include <deepdraw/io/output_lock.h>
 #include <deepdraw/io/parameter_file.h>
@@ -163,13 +164,15 @@ namespace deepdraw
         // --check --resume: the checkpoint too, as the resume would (D160).
         if (check_only && options.resume)
           forming_problem->check_resume();
-        // --check: what the run would refuse in its output directory, a
-        // live lock (D179) and a named pipe where it writes (D164).
+        // --check: what the run would refuse in its output directory: one
+        // it cannot make or write in, a live lock (D179) and a named pipe
+        // where it writes (D164).
         if (check_only)
         {
           prm.enter_subsection("Output");
           const std::string directory = prm.get("Output directory");
           prm.leave_subsection();
+          io::check_output_directory(directory, "Output/Output directory");
           io::OutputLock::check_free(directory, "Output/Output directory");
           io::check_output_entries(directory);
         }

@@ -1,7 +1,11 @@
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/io/output_directory.h>
 #include <exception>
 #include <filesystem>
+#include <unistd.h>
 
 namespace deepdraw
 {
@@ -31,6 +35,39 @@ namespace deepdraw
         throw InputError(parameter + ": cannot write results to '" + directory
                          + "': " + error.what());
       }
+    }
+
+
+    void
+    check_output_directory(const std::string &directory,
+                           const std::string &parameter)
+    {
+      // The directory, or the nearest ancestor that exists: the run makes
+      // the rest (create_directories), so that one must be a directory it
+      // can make a directory in.
+      namespace fs = std::filesystem;
+      std::error_code ec;
+      fs::path existing = fs::absolute(directory.empty() ? "." : directory);
+      while (!fs::exists(existing, ec) && existing.has_parent_path()
+             && existing != existing.parent_path())
+        existing = existing.parent_path();
+      std::string reason;
+      if (!fs::is_directory(existing, ec))
+        reason = "'" + existing.string() + "' is not a directory";
+      else
+      {
+        // A probe made and removed at once: access() says yes to root on
+        // a file system that refuses directories (/proc).
+        std::string probe = (existing / ".deepdraw-check-XXXXXX").string();
+        if (::mkdtemp(probe.data()) == nullptr)
+          reason = "no directory can be made in '" + existing.string() + "' ("
+                   + std::strerror(errno) + ")";
+        else
+          ::rmdir(probe.c_str());
+      }
+      if (!reason.empty())
+        throw InputError(parameter + ": cannot write results to '" + directory
+                         + "': " + reason);
     }
 
 

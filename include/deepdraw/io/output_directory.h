@@ -21,6 +21,13 @@ namespace deepdraw
                           const std::function<void()> &open,
                           bool                         made_for_run);
 
+    // What open_output_directory() would refuse, found without making or
+    // writing anything (--check): the directory, or the nearest ancestor
+    // that exists, must be a directory the process may write in.
+    void
+    check_output_directory(const std::string &directory,
+                           const std::string &parameter);
+
     // Whether name is a plain file name, one that stays in the directory
     // it is taken relative to: not empty, no '/', '\\' or NUL, not "." or
     // "..".
