@@ -29,31 +29,6 @@ using namespace deepdraw_test;
 
 namespace
 {
-  // n displacement-like unknowns (a chain), a multiplier per node, one
-  // bordered unknown coupled to the closed multipliers; a constrained
-  // displacement (node 0: diagonal only).
-  void
-  fill(SparseMatrix<double> &A, const std::vector<bool> &closed)
-  {
-    const unsigned int n = closed.size();
-    A                    = 0.;
-    for (unsigned int i = 0; i < n; ++i)
-    {
-      A.set(i, i, 2. + 0.1 * i);
-      if (i > 1)
-        A.set(i, i - 1, -1.);
-      if (i > 0 && i + 1 < n)
-        A.set(i, i + 1, -1.);
-      const double coupling = closed[i] ? 1. + 0.01 * i : 0.;
-      A.set(i, n + i, -coupling);
-      A.set(n + i, i, coupling);
-      A.set(n + i, n + i, closed[i] ? 0.3 * (i % 2) : 1e-3);
-      A.set(n + i, 2 * n, closed[i] ? 0.5 : 0.);
-      A.set(2 * n, n + i, closed[i] ? 1. : 0.);
-    }
-    A.set(2 * n, 2 * n, 1.);
-  }
-
   std::vector<types::global_dof_index>
   open_unknowns(const std::vector<bool> &closed)
   {
@@ -110,7 +85,7 @@ main(int argc, char *argv[])
     deepdraw::solver::LinearSolver reduced(parameters), full(parameters);
     for (unsigned int k = 0; k < states.size(); ++k)
     {
-      fill(A, states[k]);
+      fill_contact_like_matrix(A, states[k]);
       const auto     decoupled = open_unknowns(states[k]);
       Vector<double> x, x_full, r(b.size());
       reduced.solve(A, b, x, border, decoupled);
@@ -145,7 +120,7 @@ main(int argc, char *argv[])
     // After reset_reduction() the next solve leaves out exactly what it is
     // given (the state with more pairs open is not reused).
     reduced.reset_reduction();
-    fill(A, states[1]);
+    fill_contact_like_matrix(A, states[1]);
     Vector<double> x;
     reduced.solve(A, b, x, border, open_unknowns(states[1]));
     check_close(name + ": factorised unknowns after a reset",
@@ -154,7 +129,7 @@ main(int argc, char *argv[])
                 0.);
 
     // A closed multiplier listed as decoupled is kept: still exact.
-    fill(A, states[0]);
+    fill_contact_like_matrix(A, states[0]);
     auto wrong = open_unknowns(states[0]);
     wrong.push_back(n + 3);
     reduced.solve(A, b, x, border, wrong);

@@ -32,29 +32,16 @@ using namespace deepdraw_test;
 
 namespace
 {
-  // The matrix of linear_solver_decoupled with every third pair closed,
+  // The contact-like matrix with every third pair closed (not node 0's),
   // its values scaled by 1 + change * sin(entry number).
   void
   fill(SparseMatrix<double> &A, const double change)
   {
     const unsigned int n = (A.m() - 1) / 2;
-    A                    = 0.;
+    std::vector<bool>  closed(n);
     for (unsigned int i = 0; i < n; ++i)
-    {
-      const bool closed = i % 3 == 0 && i > 0;
-      A.set(i, i, 2. + 0.1 * i);
-      if (i > 1)
-        A.set(i, i - 1, -1.);
-      if (i > 0 && i + 1 < n)
-        A.set(i, i + 1, -1.);
-      const double coupling = closed ? 1. + 0.01 * i : 0.;
-      A.set(i, n + i, -coupling);
-      A.set(n + i, i, coupling);
-      A.set(n + i, n + i, closed ? 0.3 * (i % 2) : 1e-3);
-      A.set(n + i, 2 * n, closed ? 0.5 : 0.);
-      A.set(2 * n, n + i, closed ? 1. : 0.);
-    }
-    A.set(2 * n, 2 * n, 1.);
+      closed[i] = i % 3 == 0 && i > 0;
+    fill_contact_like_matrix(A, closed);
     unsigned int k = 0;
     for (auto entry = A.begin(); entry != A.end(); ++entry, ++k)
       entry->value() *= 1. + change * std::sin(1. + k);
