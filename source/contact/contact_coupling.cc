@@ -60,6 +60,31 @@ namespace deepdraw
     } // namespace
 
 
+    Tensor<1, 3>
+    ContactCoupling::spring_tool_translation(const unsigned int k,
+                                             const double       load,
+                                             const double       position) const
+    {
+      // The rest translation off the axis, the position z along it.
+      const Tensor<1, 3> &a    = definitions[k].axis;
+      const Tensor<1, 3>  rest = evaluate_translation(motions[k], load);
+      return rest - (rest * a) * a + position * a;
+    }
+
+
+    double
+    ContactCoupling::spring_force(const unsigned int k,
+                                  const double       load,
+                                  const double       position) const
+    {
+      // F = k (z_r - z): pressing along a while the sheet has pushed the
+      // tool back from its rest position z_r = a . rest (D187).
+      const double rest
+        = evaluate_translation(motions[k], load) * definitions[k].axis;
+      return motions[k].spring_stiffness * (rest - position);
+    }
+
+
     double
     ContactCoupling::prescribed_force(const unsigned int k,
                                       const double       load) const
@@ -103,9 +128,10 @@ namespace deepdraw
         }
       position_dof.assign(definitions.size(), numbers::invalid_dof_index);
       for (unsigned int k = 0; k < definitions.size(); ++k)
-        if (motions[k].takes_part && motions[k].force_controlled)
+        if (motions[k].position_is_unknown())
           position_dof[k] = next++;
       position_at_start.assign(definitions.size(), 0.);
+      spring_forces.assign(definitions.size(), 0.);
       translation_at_start.assign(definitions.size(), Tensor<1, 3>());
       translation_at_end.assign(definitions.size(), Tensor<1, 3>());
       return next - first_index;
@@ -166,6 +192,15 @@ namespace deepdraw
         {
           translation_at_start[k] = position_at_start[k] * definitions[k].axis;
           translation_at_end[k]   = translation_at_start[k];
+        }
+        else if (motions[k].spring_stiffness > 0.)
+        {
+          translation_at_start[k]
+            = spring_tool_translation(k, old_load, position_at_start[k]);
+          translation_at_end[k]
+            = spring_tool_translation(k, new_load, position_at_start[k]);
+          tool_list[k].set_rigid_motion(unit_symmetric_tensor<3>(),
+                                        translation_at_end[k]);
         }
         else
         {
@@ -248,12 +283,17 @@ namespace deepdraw
                               const bool                       predictor)
     {
       Timer timer;
-      // Force-controlled tools sit at their current unknown position.
+      // Force-controlled and spring-backed tools sit at their current
+      // unknown position.
       for (unsigned int k = 0; k < definitions.size(); ++k)
         if (position_dof[k] != numbers::invalid_dof_index)
         {
           translation_at_end[k]
-            = solution[position_dof[k]] * definitions[k].axis;
+            = motions[k].force_controlled
+                ? solution[position_dof[k]] * definitions[k].axis
+                : spring_tool_translation(k,
+                                          new_load,
+                                          solution[position_dof[k]]);
           tool_list[k].set_rigid_motion(unit_symmetric_tensor<3>(),
                                         translation_at_end[k]);
         }
@@ -333,13 +373,27 @@ namespace deepdraw
       // Holder equation: sum a.P - F(t) = 0. While no pair of the tool is
       // in contact its row is empty; then the Newton step moves the tool by
       // F / r along its axis towards the sheet instead (only the iterates
-      // change, not the converged solution).
+      // change, not the converged solution). A spring-backed tool's F is
+      // k (z_r - z), linear in its position z (D187): its row is never
+      // empty.
       for (unsigned int k = 0; k < definitions.size(); ++k)
-        if (position_dof[k] != numbers::invalid_dof_index)
+        if (position_dof[k] == numbers::invalid_dof_index)
+          continue;
+        else if (motions[k].force_controlled)
         {
           rhs[position_dof[k]] += prescribed_force(k, new_load);
           if (active_pairs[k] == 0 && matrix != nullptr)
             matrix->add(position_dof[k], position_dof[k], force_regularisation);
+        }
+        else
+        {
+          spring_forces[k]
+            = spring_force(k, new_load, solution[position_dof[k]]);
+          rhs[position_dof[k]] += spring_forces[k];
+          if (matrix != nullptr)
+            matrix->add(position_dof[k],
+                        position_dof[k],
+                        motions[k].spring_stiffness);
         }
       return changes;
     }
@@ -382,8 +436,12 @@ namespace deepdraw
       for (unsigned int k = 0; k < definitions.size(); ++k)
         if (position_dof[k] != numbers::invalid_dof_index)
         {
-          const double force = std::abs(prescribed_force(k, load));
-          error              = std::max(error,
+          // A spring's force is that of the last assembly, the iterate
+          // rhs belongs to.
+          const double force
+            = std::abs(motions[k].force_controlled ? prescribed_force(k, load)
+                                                   : spring_forces[k]);
+          error = std::max(error,
                            std::abs(rhs[position_dof[k]])
                              / (force > 0. ? force : zero_force_scale));
         }

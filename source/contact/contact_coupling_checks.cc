@@ -128,7 +128,9 @@ namespace deepdraw
           const double motion
             = std::abs(solution[position_dof[k]] - position_at_start[k]);
           if (motion > search_distance)
-            return "force-controlled tool '" + definitions[k].name + "' moved "
+            return std::string(motions[k].force_controlled ? "force-controlled"
+                                                           : "spring-backed")
+                   + " tool '" + definitions[k].name + "' moved "
                    + format_length(motion)
                    + " within the increment, more than Contact/Search "
                      "distance = "

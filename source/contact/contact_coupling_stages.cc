@@ -90,6 +90,10 @@ namespace deepdraw
           motion.force_controlled = settings.control.empty()
                                       ? tool.force_controlled
                                       : settings.control == "force";
+          // A stage that names a control makes the tool rigid or
+          // force-controlled; else the spring stays (D187).
+          motion.spring_stiffness
+            = settings.control.empty() ? tool.spring_stiffness : 0.;
           motion.force            = force;
           motion.force_expression = stage.blank_holder_force;
           motion.force_parameter  = force_parameter;

@@ -147,11 +147,25 @@ namespace deepdraw
                           "node of it forms a contact pair with the tool.");
         prm.declare_entry("Control",
                           "displacement",
-                          Patterns::Selection("displacement|force"),
+                          Patterns::Selection("displacement|force|spring"),
                           "'displacement': the tool follows Translation; "
                           "'force': its position along Force direction is "
                           "an unknown such that the contact forces on it "
-                          "add up to Process/Blank holder force.");
+                          "add up to Process/Blank holder force; 'spring': "
+                          "Translation is its rest position, and a spring "
+                          "of Spring stiffness behind it lets it yield "
+                          "along Force direction: the contact forces on "
+                          "it add up to Spring stiffness times its "
+                          "distance from the rest position (a holder on an "
+                          "elastic press or cushion, D187).");
+        prm.declare_entry("Spring stiffness",
+                          "0",
+                          Patterns::Double(0., max_force),
+                          "Control = spring: the stiffness of the spring "
+                          "behind the tool (N/mm), of the model: a quarter "
+                          "model takes a quarter of the whole tool's; "
+                          "> 0 with Control = spring (a stiffer tool than "
+                          "the bound is rigid: Control = displacement).");
         prm.declare_entry("Translation",
                           "0; 0; 0",
                           Patterns::Anything(),
@@ -224,6 +238,15 @@ namespace deepdraw
           }
           tool.sheet_face       = prm.get("Sheet surface") == "top" ? 5 : 4;
           tool.force_controlled = prm.get("Control") == "force";
+          if (prm.get("Control") == "spring")
+          {
+            tool.spring_stiffness = prm.get_double("Spring stiffness");
+            if (!(tool.spring_stiffness > 0.))
+              throw InputError(prefix + "Spring stiffness = "
+                               + prm.get("Spring stiffness")
+                               + ": Control = spring needs the spring's "
+                                 "stiffness; allowed are 0 < k <= 1e9 N/mm");
+          }
           tool.translation_expression = prm.get("Translation");
           tool.translation
             = io::parse_function_of_load(tool.translation_expression,

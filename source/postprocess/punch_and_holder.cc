@@ -21,10 +21,10 @@ namespace deepdraw
       prm.declare_entry("Blank holder tool",
                         "",
                         Patterns::Anything(),
-                        "Name of the force-controlled tool whose force and "
-                        "position are holder_force_N and holder_z_mm in "
-                        "punch_force.csv; empty: the first force-controlled "
-                        "tool.");
+                        "Name of the force-controlled or spring-backed "
+                        "tool whose force and position are holder_force_N "
+                        "and holder_z_mm in punch_force.csv; empty: the "
+                        "first such tool.");
       prm.leave_subsection();
     }
 
@@ -53,7 +53,7 @@ namespace deepdraw
             && tools[k].name == punch_name)
           punch_tool = k;
         if (holder_tool == numbers::invalid_unsigned_int
-            && tools[k].force_controlled
+            && (tools[k].force_controlled || tools[k].spring_stiffness > 0.)
             && (holder_name.empty() || tools[k].name == holder_name))
           holder_tool = k;
       }
@@ -63,7 +63,7 @@ namespace deepdraw
                          + punch_name + "'");
       if (holder_tool == numbers::invalid_unsigned_int && !holder_name.empty())
         throw InputError("Process tables/Blank holder tool: no "
-                         "force-controlled tool is named '"
+                         "force-controlled or spring-backed tool is named '"
                          + holder_name + "'");
       direction = Tensor<1, 3>({0., 0., -1.});
       if (punch_tool == numbers::invalid_unsigned_int)

@@ -125,6 +125,11 @@ namespace
        {"Contact/Augmentation parameter", "0"},
        {"Contact/Augmentation scaling", ""},
        {"Contact/Search distance", ""},
+       // 0 is the default of the tools that are not spring-backed.
+       {"Contact/Tool 1/Spring stiffness", "0"},
+       {"Contact/Tool 2/Spring stiffness", "0"},
+       {"Contact/Tool 3/Spring stiffness", "0"},
+       {"Contact/Tool 4/Spring stiffness", "0"},
        {"Tools/Punch/Half width", ""},
        {"Tools/Punch/Plan corner radius", ""},
        {"Tools/Punch/Profile radius", ""},
@@ -184,7 +189,9 @@ namespace
        {"Geometry/Elements along x", "1.5", "Elements along x"},
        {"Geometry/Length", "75 mm", "Length"},
        {"Geometry/Length", "", "Length"},
-       {"Geometry/Length", "0x10", "Length"}};
+       {"Geometry/Length", "0x10", "Length"},
+       // Control = spring needs a stiffness > 0 (D187): the default 0.
+       {"Contact/Tool 3/Control", "spring", "Spring stiffness"}};
 
   // The repository root, from CMake (tests/CMakeLists.txt): __FILE__ may be
   // relative to wherever the compiler (or ccache) ran.
@@ -318,7 +325,7 @@ main(int argc, char *argv[])
   fs::create_directories("hostile_parameters");
   fs::current_path("hostile_parameters");
 
-  // The table covers every numeric entry (Contact/Tool 1..4 have none).
+  // The table covers every numeric entry.
   {
     dealii::ParameterHandler prm;
     deepdraw::problem::FormingProblem::declare_parameters(prm);

@@ -5,7 +5,9 @@
 // it; each pair owns an unknown contact force lambda (3 components, the
 // force of the tool on the node, N). A force-controlled tool adds one
 // unknown, its position z along its axis a, with the equation
-// sum_pairs a . P = F(t). The tools are declared in four slots,
+// sum_pairs a . P = F(t); a spring-backed tool (Control = spring) too, with
+// sum_pairs a . P = k (z_r(t) - z), z_r its rest position (D187). The tools
+// are declared in four slots,
 // subsection Contact / subsection Tool 1 ... Tool 4.
 #ifndef deepdraw_contact_contact_coupling_h
 #define deepdraw_contact_contact_coupling_h
@@ -55,6 +57,10 @@ namespace deepdraw
       unsigned int sheet_face = 5;
       // Control = force (a stage may change it, ToolMotion).
       bool force_controlled = false;
+      // Control = spring: the stiffness k (N/mm, of the model: a quarter
+      // model carries a quarter of it) behind the rest position that
+      // Translation gives; 0 for the other controls.
+      double spring_stiffness = 0.;
       // Translation (3 expressions of t, mm, from the file position), and
       // its text for messages.
       std::shared_ptr<FunctionParser<1>> translation;
@@ -72,6 +78,16 @@ namespace deepdraw
     {
       bool takes_part       = true;
       bool force_controlled = false;
+      // > 0: backed by a spring of this stiffness (N/mm) at its rest
+      // position, the translation below (D187).
+      double spring_stiffness = 0.;
+      // Force control and the spring make the position along the axis an
+      // unknown.
+      bool
+      position_is_unknown() const
+      {
+        return takes_part && (force_controlled || spring_stiffness > 0.);
+      }
       // Displacement control: the translation is origin + f(t), f the
       // declared Translation (origin 0: from the file position) or the
       // stage's (relative: origin is where the tool stood at the start of
@@ -252,7 +268,17 @@ namespace deepdraw
       declared_translation(unsigned int k, double load) const;
       double
       prescribed_force(unsigned int k, double load) const;
-      // Unknowns of the positions of the force-controlled tools.
+      // Spring-backed tool k at position z along its axis: its translation
+      // (the rest translation off the axis, z along it) and the spring's
+      // force k (z_r(t) - z) (D187).
+      Tensor<1, 3>
+      spring_tool_translation(unsigned int k,
+                              double       load,
+                              double       position) const;
+      double
+      spring_force(unsigned int k, double load, double position) const;
+      // Unknowns of the positions of the force-controlled and spring-backed
+      // tools.
       std::vector<types::global_dof_index>
       tool_position_unknowns() const;
       // Counts of pairs in stick and slip after the last assemble().
@@ -374,8 +400,10 @@ namespace deepdraw
       std::vector<geometry::RigidTool>     tool_list;
       // Unknown index of the position of each force-controlled tool
       // (invalid for displacement control).
-      std::vector<types::global_dof_index>      position_dof;
-      std::vector<double>                       position_at_start; // z_n
+      std::vector<types::global_dof_index> position_dof;
+      std::vector<double>                  position_at_start; // z_n
+      // Spring-backed tools: the spring's force at the last assembly (N).
+      std::vector<double>                       spring_forces;
       std::vector<Tensor<1, 3>>                 translation_at_start;
       std::vector<Tensor<1, 3>>                 translation_at_end;
       std::vector<Pair>                         pairs;
