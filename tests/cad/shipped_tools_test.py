@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
-"""The STEP tools shipped with prm/square_cup_step.prm and
-prm/cylindrical_cup.prm (prm/tools/square_cup, prm/tools/cylindrical_cup)
-are what `deepdraw --write-square-cup-tools DIR PRM` writes today from the
+"""The STEP tools shipped with prm/square_cup_step.prm,
+prm/cylindrical_cup.prm and prm/esaform2021_cup.prm (prm/tools/square_cup,
+prm/tools/cylindrical_cup, prm/tools/esaform2021_cup) are what `deepdraw --write-square-cup-tools DIR PRM` writes today from the
 prm's Tools subsection: the same files line for line, but for the date in
 the STEP header (FILE_NAME). So a change of the builder or of the prm's
 tool dimensions cannot leave the shipped files behind; and both prms run as
@@ -19,7 +19,8 @@ import script_test  # noqa: E402
 from script_test import run  # noqa: E402
 
 SETS = (("square_cup", "square_cup.prm"),
-        ("cylindrical_cup", "cylindrical_cup.prm"))
+        ("cylindrical_cup", "cylindrical_cup.prm"),
+        ("esaform2021_cup", "esaform2021_cup.prm"))
 TOOLS = ("punch.step", "die.step", "blank_holder.step")
 
 
