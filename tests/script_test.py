@@ -55,6 +55,34 @@ def table(path):
     return rows[0], [[float(x) for x in row] for row in rows[1:] if row]
 
 
+def compare_columns(expected, actual, tables, tolerance, looser=None):
+    """Each column of each of `tables` in `actual` within `tolerance` (or
+    looser[column]) of the largest magnitude of that column in `expected`:
+    two runs that converge the same increments by different paths to a
+    Newton tolerance. Prints every column; returns the failures."""
+    looser = looser or {}
+    failures = []
+    for name in tables:
+        header, reference = table(expected / name)
+        header_actual, values = table(actual / name)
+        if header_actual != header or len(values) != len(reference):
+            failures.append("%s: other columns or rows" % name)
+            continue
+        for j, column in enumerate(header):
+            scale = max(abs(row[j]) for row in reference) or 1.0
+            difference = max(abs(a[j] - e[j])
+                             for a, e in zip(values, reference)) / scale
+            allowed = looser.get(column, tolerance)
+            ok = difference <= allowed
+            print("%s %-20s %-16s %.2e (tolerance %.0e)"
+                  % ("ok  " if ok else "FAIL", name, column, difference,
+                     allowed))
+            if not ok:
+                failures.append("%s %s differs by %.3g relative"
+                                % (name, column, difference))
+    return failures
+
+
 def rows(path):
     """The rows of a CSV table as {column: float} (the check scripts of the
     prm tests import this module too)."""

@@ -68,7 +68,22 @@ namespace deepdraw
                         "Incompatible modes: evaluations of the element "
                         "(Newton steps and their halvings) allowed for its "
                         "enhanced parameters before the attempt is cut "
-                        "back.");
+                        "back (or, see Enhanced iterations exhausted, "
+                        "before the global Newton takes over).");
+      prm.declare_entry("Enhanced iterations exhausted",
+                        "cut back",
+                        Patterns::Selection("iterate globally|cut back"),
+                        "Incompatible modes: what happens when an element "
+                        "has used up its Enhanced iterations without "
+                        "meeting the Enhanced tolerance. 'iterate "
+                        "globally': it is condensed at its last enhanced "
+                        "parameters (Simo-Rifai: the remaining step "
+                        "corrects its residual) and the global Newton "
+                        "goes on; an increment converges only when every "
+                        "element meets the tolerance. 'cut back': the "
+                        "attempt fails and the increment is cut back "
+                        "(D189: the default, as no run was measured to "
+                        "gain from the other).");
     }
 
 
@@ -82,6 +97,8 @@ namespace deepdraw
                                                  : ElementTechnology::incompatible_modes;
       enhanced_tolerance      = prm.get_double("Enhanced tolerance");
       enhanced_max_iterations = prm.get_integer("Enhanced iterations");
+      iterate_enhanced_globally
+        = prm.get("Enhanced iterations exhausted") == "iterate globally";
     }
   } // namespace fe
 } // namespace deepdraw

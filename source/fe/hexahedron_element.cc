@@ -326,6 +326,9 @@ namespace deepdraw
       double alpha_base[max_enhanced], step_direction[max_enhanced];
       double base_norm = std::numeric_limits<double>::infinity(), step = 0.;
       bool   restarted = false;
+      // Iterations used up: the last accepted alpha is evaluated once more
+      // and condensed as it is (D189).
+      bool pending = false;
       // The element's forces are measured against at least 1e-8 of the
       // forces of its stress at the increment's start, |sigma_n| V^(2/3):
       // where the increment ends stress-free (a release, D152) its forces
@@ -344,7 +347,14 @@ namespace deepdraw
       for (unsigned int iteration = 0;; ++iteration)
       {
         if (iteration >= parameters.enhanced_max_iterations)
-          return ElementStatus::enhanced_not_converged;
+        {
+          if (!parameters.iterate_enhanced_globally || pending
+              || !(base_norm < std::numeric_limits<double>::infinity()))
+            return ElementStatus::enhanced_not_converged;
+          pending = true;
+          step    = 0.;
+          std::copy(alpha_base, alpha_base + ne, alpha);
+        }
         points_plastic             = 0;
         const ElementStatus status = integrate(geometry,
                                                du,
@@ -392,6 +402,11 @@ namespace deepdraw
         if (!invert_in_place(K_aa_inverse, ne))
           return ElementStatus::enhanced_not_converged;
         if (enhanced_residual <= parameters.enhanced_tolerance * force_scale)
+        {
+          pending = false;
+          break;
+        }
+        if (pending)
           break;
         base_norm = norm;
         step      = 1.;
@@ -428,6 +443,9 @@ namespace deepdraw
             sensitivity[j] += factor * K_au_l[j];
         }
       }
+      // The global Newton predicts alpha from this linearisation
+      // (values + correction + sensitivity du): Simo and Rifai's condensed
+      // update, without the local loop having converged.
       for (unsigned int j = 0; j < nu; ++j)
         enhanced.evaluated_at[j] = du[j];
       // r* = r_u + K_ua correction, K* = K_uu + K_ua sensitivity.
@@ -450,7 +468,7 @@ namespace deepdraw
             K_i[j] += factor * sensitivity[j];
         }
       }
-      return ElementStatus::ok;
+      return pending ? ElementStatus::enhanced_pending : ElementStatus::ok;
     }
   } // namespace fe
 } // namespace deepdraw

@@ -47,6 +47,7 @@ namespace deepdraw
         = sheet.cell_geometry();
       std::atomic<int>          worst_status{0};
       std::atomic<unsigned int> plastic_points{0};
+      std::atomic<unsigned int> pending_elements{0};
 
       auto worker
         = [&](const typename DoFHandler<3>::active_cell_iterator &cell,
@@ -73,7 +74,9 @@ namespace deepdraw
                              copy.residual.begin(),
                              matrix != nullptr ? &copy.matrix : nullptr,
                              cell_plastic_points);
-        if (status != fe::ElementStatus::ok)
+        if (status == fe::ElementStatus::enhanced_pending)
+          ++pending_elements;
+        else if (status != fe::ElementStatus::ok)
         {
           // Atomic maximum: the most specific failure is reported.
           const int code = static_cast<int>(status);
@@ -128,7 +131,8 @@ namespace deepdraw
       if (hanging.n_constraints() > 0)
         hanging.condense(internal_force);
       return {static_cast<fe::ElementStatus>(worst_status.load()),
-              plastic_points.load()};
+              plastic_points.load(),
+              pending_elements.load()};
     }
   } // namespace problem
 } // namespace deepdraw

@@ -177,13 +177,15 @@ namespace deepdraw
                          with_matrix,
                          target_load,
                          &constraints == &model.constraints().predictor());
-      newton_progress.plastic_points = result.plastic_points;
+      newton_progress.plastic_points   = result.plastic_points;
+      newton_progress.pending_elements = result.pending_elements;
       newton_progress.assembly_time += result.element_time;
       newton_progress.last_assembly_changes = result.contact_changes;
       newton_progress.contact_changes += result.contact_changes;
       switch (result.status)
       {
         case fe::ElementStatus::ok:
+        case fe::ElementStatus::enhanced_pending:
           return IncrementOutcome::converged;
         case fe::ElementStatus::inverted:
           return IncrementOutcome::inverted_element;
@@ -243,9 +245,12 @@ namespace deepdraw
     solver::ResidualMeasures
     IncrementSolver::residual_measures() const
     {
-      return measure_residuals(model,
-                               target_load,
-                               parameters.tool_force_tolerance);
+      solver::ResidualMeasures residuals
+        = measure_residuals(model,
+                            target_load,
+                            parameters.tool_force_tolerance);
+      residuals.enhanced_converged = newton_progress.pending_elements == 0;
+      return residuals;
     }
 
 

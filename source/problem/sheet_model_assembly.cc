@@ -68,9 +68,10 @@ namespace deepdraw
       if (stage().releases_forces())
         add_release_loads(constraints_used, load, system->rhs());
       AssemblyResult result;
-      result.status         = elements.status;
-      result.plastic_points = elements.plastic_points;
-      result.element_time   = timer.wall_time();
+      result.status           = elements.status;
+      result.plastic_points   = elements.plastic_points;
+      result.pending_elements = elements.pending_elements;
+      result.element_time     = timer.wall_time();
       // Contact forces and their constraints, after the elements so that
       // the element time excludes the contact search.
       if (contact_coupling.active())

@@ -118,7 +118,7 @@ namespace deepdraw
           const bool only_predicted = check == 1;
           if (residuals.force <= parameters.force_tolerance
               && residuals.contact <= parameters.force_tolerance
-              && residuals.tool_forces_met
+              && residuals.tool_forces_met && residuals.enhanced_converged
               && (only_predicted
                   || relative_correction <= parameters.correction_tolerance))
             return IncrementOutcome::converged;

@@ -54,30 +54,6 @@ def solver_counts(log):
     return tuple(int(g) for g in match.groups()) if match else None
 
 
-def compare(expected, actual):
-    """Each column of TABLES within its tolerance of its largest value."""
-    failures = []
-    for name in TABLES:
-        header, reference = script_test.table(expected / name)
-        header_actual, values = script_test.table(actual / name)
-        if header_actual != header or len(values) != len(reference):
-            failures.append("%s: other columns or rows" % name)
-            continue
-        for j, column in enumerate(header):
-            scale = max(abs(row[j]) for row in reference) or 1.0
-            difference = max(abs(a[j] - e[j])
-                             for a, e in zip(values, reference)) / scale
-            tolerance = LOOSER.get(column, TOLERANCE)
-            ok = difference <= tolerance
-            print("%s %-20s %-16s %.2e (tolerance %.0e)"
-                  % ("ok  " if ok else "FAIL", name, column, difference,
-                     tolerance))
-            if not ok:
-                failures.append("%s %s differs by %.3g relative"
-                                % (name, column, difference))
-    return failures
-
-
 def main():
     args, source, work = script_test.start(__doc__)
     failures = []
@@ -96,7 +72,8 @@ def main():
     if counts is None or counts[1] == 0:
         failures.append("no system was solved with a kept factorisation: %s"
                         % (counts,))
-    failures += compare(work / "full", work / "reused")
+    failures += script_test.compare_columns(work / "full", work / "reused",
+                                            TABLES, TOLERANCE, LOOSER)
 
     log = run([args.deepdraw, strict, "--output-directory", "strict"], work,
               tail=300)

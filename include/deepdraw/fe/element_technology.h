@@ -47,6 +47,11 @@ namespace deepdraw
       // nodal force of the element.
       double       enhanced_tolerance      = 1e-4;
       unsigned int enhanced_max_iterations = 25;
+      // When they are used up: the element is condensed at its last
+      // enhanced parameters and the global Newton goes on, converging only
+      // once every element meets the tolerance (true); or the attempt is
+      // cut back (false, the default, D189).
+      bool iterate_enhanced_globally = false;
 
       // Entries of `subsection Finite element` (the caller enters it).
       static void

@@ -53,9 +53,14 @@ namespace deepdraw
     enum class ElementStatus
     {
       ok,
-      inverted,              // det F <= 0 at a point
-      return_mapping_failed, // the material's local Newton failed
-      enhanced_not_converged // the enhanced parameters did not converge
+      inverted,               // det F <= 0 at a point
+      return_mapping_failed,  // the material's local Newton failed
+      enhanced_not_converged, // the enhanced parameters did not converge
+      // Not a failure: the local iterations were used up without meeting
+      // the enhanced tolerance; the element's residual and tangent are
+      // condensed at its last enhanced parameters, and the global Newton
+      // iterates on (D189).
+      enhanced_pending
     };
 
     class HexahedronElement

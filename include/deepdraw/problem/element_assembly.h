@@ -22,6 +22,8 @@ namespace deepdraw
       // The most specific failure of a point (ok if none failed).
       fe::ElementStatus status         = fe::ElementStatus::ok;
       unsigned int      plastic_points = 0;
+      // Elements condensed with unconverged enhanced parameters (D189).
+      unsigned int pending_elements = 0;
     };
 
     // Adds every cell's residual r (rhs -= r) and, with matrix != nullptr,

@@ -25,8 +25,10 @@ namespace deepdraw
       unsigned int contact_changes       = 0;
       unsigned int last_assembly_changes = 0;
       unsigned int changes_reported      = 0;
-      // Quadrature points that yielded in the last assembly.
-      unsigned int plastic_points = 0;
+      // Quadrature points that yielded in the last assembly, and elements
+      // condensed with unconverged enhanced parameters in it (D189).
+      unsigned int plastic_points   = 0;
+      unsigned int pending_elements = 0;
       // Of the increment's attempts so far (s).
       double assembly_time = 0.;
       double solve_time    = 0.;

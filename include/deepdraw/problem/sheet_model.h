@@ -35,6 +35,8 @@ namespace deepdraw
     {
       fe::ElementStatus status         = fe::ElementStatus::ok;
       unsigned int      plastic_points = 0;
+      // Elements condensed with unconverged enhanced parameters (D189).
+      unsigned int pending_elements = 0;
       // Contact pairs whose state changed (NewtonSystem::state_changes).
       unsigned int contact_changes = 0;
       // Wall time of the elements' part (s), without the contact search.

@@ -47,6 +47,8 @@ namespace deepdraw
       double contact = 0.; // contact equations / force scale
       // Force-controlled tools meet their force to the tolerance.
       bool tool_forces_met = true;
+      // Every element's enhanced parameters meet their tolerance (D189).
+      bool enhanced_converged = true;
     };
 
     // What one increment needs of the discretised problem. The unknowns x
