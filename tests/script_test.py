@@ -189,6 +189,48 @@ def same_tables(expected, actual, what="the uninterrupted run"):
     return failures
 
 
+def close_tables(expected, actual, what, relative=1e-12):
+    """As same_tables, but for runs on different machines (D190): the text
+    cells equal, and the numbers equal to `relative` of the larger, or
+    their difference below `relative` times the largest magnitude in the
+    table (round-off: Newton residuals of 1e-17, reactions of 1e-16 N of a
+    frictionless plate). Returns the failures."""
+    failures = []
+    for table in sorted(p.name for p in pathlib.Path(expected).glob("*.csv")):
+        a = comparable_table(pathlib.Path(expected) / table)
+        b = comparable_table(pathlib.Path(actual) / table)
+        same = len(a) == len(b) and a[0] == b[0] and \
+            all(len(ra) == len(rb) for ra, rb in zip(a, b))
+        worst = 0.
+        if same:
+            largest = 0.
+            for row in a[1:] + b[1:]:
+                for v in row:
+                    try:
+                        largest = max(largest, abs(float(v)))
+                    except ValueError:
+                        pass
+            floor = relative * largest
+            for ra, rb in zip(a[1:], b[1:]):
+                for x, y in zip(ra, rb):
+                    if x == y:
+                        continue
+                    try:
+                        fx, fy = float(x), float(y)
+                    except ValueError:
+                        same = False
+                        continue
+                    allowed = max(relative * max(abs(fx), abs(fy)), floor)
+                    worst = max(worst, abs(fx - fy) / allowed
+                                if allowed > 0 else float("inf"))
+            same = same and worst <= 1.
+        print("%s %s (largest difference %.2g of the allowed)"
+              % ("close" if same else "DIFFERENT", table, worst))
+        if not same:
+            failures.append("%s differs from %s" % (table, what))
+    return failures
+
+
 class Checks:
     """The checks of a check.py: each prints its value against the
     expected one and keeps the failures."""

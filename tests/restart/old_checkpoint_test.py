@@ -5,9 +5,13 @@ case.prm pressed by a force-controlled holder, to load 0.6, by the
 deepdraw of commit 6d4f1ac) resumes with this deepdraw (D101): the new
 parameters are at their defaults, the VTU counter and PVD steps of the old
 format are the "visualization" post-processor's data. Resumed to load 1 it
-must repeat the run of this deepdraw from the start: every CSV table byte
-for byte but for the wall times (*_s) and the orderings counted in
-statistics.csv (D97).
+must repeat the run of this deepdraw from the start: every CSV table but
+for the wall times (*_s) and the orderings counted in statistics.csv (D97),
+to 1e-12 relative or to 1e-12 of the table's largest number (D190: the
+checkpoint and its tables were written on another machine, whose CPU
+rounds the solver's sums differently; they differ by round-off, the
+residuals of 1e-17 and the reactions of 1e-16 N of a 30 N plate; byte for
+byte on one machine is what the restart tests of this deepdraw check).
 A format-1 checkpoint of another model (another holder force) is refused
 with exit code 2 naming the parameter, and the folder is left as it was.
 
@@ -33,8 +37,8 @@ def main():
     failures = []
     if "resumed at load 0.6" not in log:
         failures.append("the run did not resume at load 0.6")
-    failures += script_test.same_tables(work / "fresh", work / "resumed",
-                                        "the run from the start")
+    failures += script_test.close_tables(work / "fresh", work / "resumed",
+                                         "the run from the start")
 
     shutil.copytree(data / "output", work / "refused")
     before = snapshot(work / "refused")

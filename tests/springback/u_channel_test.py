@@ -8,25 +8,25 @@ Expectations independent of the code:
   the mid-surface has 1 - 0.78 = 0.22 mm of free play across it; over the
   straight part of the wall of this draw (s0 = 40 to 50, 10 mm along the
   wall) it can tilt by at most atan(0.22 / 10) = 1.26 degrees, and theta1
-  and theta2 are 90 degrees within that (measured 89.61 and 89.88; theta1
+  and theta2 are 90 degrees within that (measured 89.60 and 89.88; theta1
   holds also the bottom's bow, its centre 0.09 mm above its end at s0 = 20,
   0.3 degrees);
 - the force release turns the flange down against the wall (the bending
   moment of the die shoulder relaxes; at 70 mm theta2 falls from 90.1 to
   77.8 degrees, doc/results.md): theta2 falls by more than 1 degree
-  (measured 2.41; the bound is a sign with a margin of half the measured
+  (measured 2.56; the bound is a sign with a margin of half the measured
   value, not a value);
 - the release leaves no tool acting (their forces zero at its end) and its
-  increments converge (at most 16 Newton iterations each: measured 8 in
-  the first, 1 in the nine others; the bound is twice the largest).
+  increments converge (at most 18 Newton iterations each: measured 9 in
+  the first, 1 to 7 in the nine others; the bound is twice the largest).
 
 The tool retraction is not compared here: from the end of this draw (and
 from that of the 70 mm draw) its first increment fails in every cut-back
 ("enhanced parameters of an element did not converge", D156; not
 round-off in stress-free elements, D157; what its first increment shows,
 D158).
-Measured on 2 cores shared with two builds: 66 s for the draw, 1 s for the
-release.
+Measured on 2 cores shared with another run: 63 s for the draw (450
+increments with the tolerances 1e-4), 1 s for the release.
 
     u_channel_test.py --deepdraw EXE --source-dir REPO --work-dir DIR
 """
@@ -50,8 +50,8 @@ PARTS = "bottom: 0, 20; wall: 40, 50; flange: 65, 165"
 # The wall's tilt the clearance allows (module docstring): free play
 # 1 - 0.78 mm over the 10 mm of s0 = 40 to 50.
 BEFORE_TOLERANCE = math.degrees(math.atan(0.22 / 10.))
-THETA2_FALL = 1.0          # deg; measured 2.41
-RELEASE_ITERATIONS = 16    # per increment; measured at most 8 (twice that)
+THETA2_FALL = 1.0          # deg; measured 2.56
+RELEASE_ITERATIONS = 18    # per increment; measured at most 9 (twice that)
 
 
 def variant(text, tools):
@@ -65,6 +65,12 @@ def variant(text, tools):
     text = text.replace("set Element = incompatible modes",
                         "set Enhanced iterations = 100\n"
                         "  set Element = incompatible modes")
+    # Tolerances 1e-4, not the prm's 1e-3: on some machines (their CPU
+    # rounds the solver's sums differently) the 1e-3 path converges at
+    # 5.38 mm to a state (force residual 9.6e-4) from which every further
+    # increment fails down to the minimum; 1e-4 draws through (D190).
+    text = re.sub(r"set (Force|Correction) tolerance( *)= 1e-3",
+                  r"set \1 tolerance\2= 1e-4", text)
     text = text.replace("set Final load = 70", "set Final load = %g" % STROKE)
     text = text.replace("set Final load         = 71",
                         "set Final load         = %g" % (STROKE + 1))
