@@ -4,6 +4,7 @@
 #include <deepdraw/io/printable_text.h>
 #include <deepdraw/io/text_file.h>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <vector>
 
@@ -85,6 +86,15 @@ namespace deepdraw
         return lines;
       }
 
+      bool
+      starts_with_byte_order_mark(const std::string &filename)
+      {
+        std::ifstream file(filename, std::ios::binary);
+        char          head[3] = {0, 0, 0};
+        file.read(head, 3);
+        return file.gcount() == 3 && std::string(head, 3) == "\xEF\xBB\xBF";
+      }
+
       // Includes followed in all (a file may include another one many
       // times, and that one again: the count grows exponentially with the
       // depth).
@@ -107,6 +117,14 @@ namespace deepdraw
           throw InputError(std::string(error.what()) + " (included from "
                            + describe_chain(chain) + ")");
         }
+        // deal.II reads an included file itself, without dropping a
+        // byte-order mark as read_text_file does for the top-level one.
+        if (!chain.empty() && starts_with_byte_order_mark(filename))
+          throw InputError(one_line(filename, 300)
+                           + ": begins with a UTF-8 byte-order mark, which "
+                             "an included parameter file may not have (save "
+                             "it as UTF-8 without one; included from "
+                           + describe_chain(chain) + ")");
         std::error_code   ignored;
         const std::string canonical
           = std::filesystem::weakly_canonical(filename, ignored).string();
