@@ -96,6 +96,17 @@ namespace deepdraw
                      motion.force_parameter,
                      motion.force_expression,
                      load);
+      // The input check saw a force > 0 at the check loads only (D176);
+      // without one the tool has no support and the Newton stagnates.
+      if (!(force > 0.))
+      {
+        std::ostringstream text;
+        text << std::setprecision(6) << motion.force_parameter << " = '"
+             << io::one_line(motion.force_expression) << "' gives " << force
+             << " N at t = " << load
+             << "; a force-controlled tool needs a force > 0 N";
+        throw std::runtime_error(text.str());
+      }
       return force;
     }
 

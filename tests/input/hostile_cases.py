@@ -430,6 +430,14 @@ def run_time_cases(source):
              messages=["Boundary conditions/Prescribed displacements: "
                        "'xmax: ux = sqrt(abs(t-0.55)-0.01)' is not finite at "
                        "t = 0.5"]),
+        dict(name="holder_force_zero_between_check_loads",
+             files=cup(sub("Process", "Blank holder force",
+                           "if(t > 0.101 && t < 0.149, 0, 4900)")),
+             exit=3,
+             messages=["the run stopped: Process/Blank holder force = "
+                       "'if(t > 0.101 && t < 0.149, 0, 4900)' gives 0 N at "
+                       "t = 0.1125; a force-controlled tool needs a force "
+                       "> 0 N"]),
         dict(name="release_supports_find_one_node",
              files=bar(sub("Geometry", "Symmetry planes", ""),
                        sub("Boundary conditions", "Prescribed displacements",
