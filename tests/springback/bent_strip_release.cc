@@ -2,18 +2,19 @@
 // release stage (D150, D151; doc/theory.md §9).
 //
 // The strip of tests/element/plastic_bending.cc (L = 24 mm, t = 0.81 mm,
-// b = 1 mm, one element wide with uy = 0 on both y faces, von Mises, 3 mm
-// elements, 4 layers, incompatible modes): stage 1 'bend' (t 0 -> 1) holds
-// xmin (ux = uz = 0) and rotates xmax as a plane to theta; stage 2
-// 'release' (t 1 -> 2, 10 increments) releases the end faces' forces as
+// b = 1 mm, one element wide with uy = 0 on both y faces, von Mises, 32
+// elements of 0.75 mm along it, 4 layers, incompatible modes): stage 1 'bend'
+// (t 0 -> 1) holds xmin (ux = uz = 0) and rotates xmax as a plane to theta;
+// stage 2 'release' (t 1 -> 2, 10 increments) releases the end faces' forces as
 // loads that fall to zero, held only by the y faces and supports that
 // leave no rigid-body mode (and carry nothing once the loads are gone):
 // (a) on the xmin face, (b) 18 mm apart along the strip.
 //
 // (a) Elastic (Swift coefficient 1e6: no yield), rotated to theta = 0.06
 //     (surface strain 1e-3): the strip returns to its initial shape up to
-//     the second-order path dependence of the hypoelastic update (the
-//     loading and the release follow different strain paths): measured
+//     the discretisation and the second-order path dependence of the
+//     hypoelastic update (the loading and the release follow different
+//     strain paths): measured
 //     9.8e-7 of the largest bent displacement and 4.6e-6 of the largest
 //     bent stress (with 8 elements along the strip 1.6e-5 and 4.5e-5), not
 //     the Newton tolerance (1e-10). Asserted: 3e-6 and 1.5e-5.
