@@ -13,6 +13,7 @@ numeric parameters are tests/input/hostile_parameters.cc). A case is a dict:
 Each class is a function of the repository root returning its cases.
 """
 import os
+import resource
 import subprocess
 
 from hostile_files_cases import special_file_cases
@@ -430,6 +431,22 @@ def run_time_cases(source):
              messages=["Boundary conditions/Prescribed displacements: "
                        "'xmax: ux = sqrt(abs(t-0.55)-0.01)' is not finite at "
                        "t = 0.5"]),
+        # D177: 1.8 GiB of address space hold the 100 x 100 x 2 cup's
+        # set-up, MUMPS' analysis and the checkpoint (at 1.6 GiB the
+        # checkpoint fails too), not the 0.87 GB more of its factorisation
+        # (VmPeak 2.36 GB without a limit).
+        dict(name="mumps_out_of_memory",
+             files={"case.prm": "include prm/square_cup.prm\n" + sub(
+                 "Geometry", "Elements along x", "100") + sub(
+                 "Geometry", "Elements along y", "100") + sub(
+                 "Process", "Final load", "0.1") + sub(
+                 "Output", "Write VTU", "false")},
+             preexec=lambda: resource.setrlimit(
+                 resource.RLIMIT_AS, (1800 << 20, 1800 << 20)),
+             exit=3,
+             messages=["the run stopped: the linear solver MUMPS ran out of "
+                       "memory in job 2", "a smaller increment would not "
+                       "help", "with a checkpoint to continue from"]),
         dict(name="holder_force_zero_between_check_loads",
              files=cup(sub("Process", "Blank holder force",
                            "if(t > 0.101 && t < 0.149, 0, 4900)")),
