@@ -401,12 +401,10 @@ namespace deepdraw
             K_aa_inverse[k * ne + l] = K[(nu + k) * n + nu + l];
         if (!invert_in_place(K_aa_inverse, ne))
           return ElementStatus::enhanced_not_converged;
-        if (enhanced_residual <= parameters.enhanced_tolerance * force_scale)
-        {
-          pending = false;
-          break;
-        }
-        if (pending)
+        // A pending element is evaluated at an alpha that already missed
+        // the tolerance: it is condensed as it is.
+        if (enhanced_residual <= parameters.enhanced_tolerance * force_scale
+            || pending)
           break;
         base_norm = norm;
         step      = 1.;

@@ -7,10 +7,9 @@ run three times:
 - the default, 25 local evaluations of the enhanced parameters per element
   and assembly: the reference;
 - one evaluation (`Enhanced iterations = 1`, `iterate globally`): an
-  element meets the
-  enhanced tolerance only where the alpha predicted from its last
-  linearisation already does, so most are condensed unconverged and the
-  global Newton carries the enhanced parameters (Simo and Rifai's
+  element meets the enhanced tolerance only where the alpha predicted from
+  its last linearisation already does, so most are condensed unconverged
+  and the global Newton carries the enhanced parameters (Simo and Rifai's
   condensed update); the converged increments must agree with the
   reference to the Newton tolerance: every column of punch_force.csv,
   draw_in.csv, tools.csv and the thickness profiles within TOLERANCE of

@@ -17,6 +17,25 @@ namespace bending_reference
 {
   using namespace dealii;
 
+  // int f(z) dz over the thickness t, z from -t/2 to t/2 (trapezoidal rule
+  // on n_fibres fibres).
+  template <typename Function>
+  double
+  through_thickness(const double       thickness,
+                    const Function    &f,
+                    const unsigned int n_fibres = 4000)
+  {
+    double sum = 0.;
+    for (unsigned int i = 0; i <= n_fibres; ++i)
+    {
+      const double z = -thickness / 2. + thickness * i / n_fibres;
+      const double w
+        = (i == 0 || i == n_fibres ? 0.5 : 1.) * thickness / n_fibres;
+      sum += w * f(z);
+    }
+    return sum;
+  }
+
   class PlaneStrainFibre
   {
   public:
@@ -76,15 +95,12 @@ namespace bending_reference
            const double       width,
            const unsigned int n_fibres = 4000) const
     {
-      double moment = 0.;
-      for (unsigned int i = 0; i <= n_fibres; ++i)
-      {
-        const double z = -thickness / 2. + thickness * i / n_fibres;
-        const double w
-          = (i == 0 || i == n_fibres ? 0.5 : 1.) * thickness / n_fibres;
-        moment += w * stress(std::log(1. + kappa * z)) * z;
-      }
-      return width * moment;
+      return width
+             * through_thickness(
+               thickness,
+               [&](const double z)
+               { return stress(std::log(1. + kappa * z)) * z; },
+               n_fibres);
     }
 
     deepdraw::material::MaterialParameters parameters;

@@ -44,9 +44,11 @@ namespace bending_reference
       }
       // M = int sigma r dr = rho int sigma dZ (r dr = rho dZ), about the
       // centre; with no axial force about any point.
-      moment  = width * rho * integral([this](double Z) { return stress(Z); });
-      r_inner = radius(-thickness / 2.);
-      r_outer = radius(thickness / 2.);
+      moment = width * rho
+               * through_thickness(thickness,
+                                   [this](double Z) { return stress(Z); });
+      r_inner          = radius(-thickness / 2.);
+      r_outer          = radius(thickness / 2.);
       const double t   = r_outer - r_inner;
       r_neutral        = t / std::log(r_outer / r_inner);
       const double r_c = 0.5 * (r_inner + r_outer);
@@ -87,22 +89,9 @@ namespace bending_reference
     double
     axial_force() const
     {
-      return integral([this](double Z) { return stress(Z) * rho / radius(Z); });
-    }
-
-    // Trapezoidal rule over the thickness on 4000 fibres.
-    template <typename Function>
-    double
-    integral(const Function &f) const
-    {
-      const unsigned int n   = 4000;
-      double             sum = 0.;
-      for (unsigned int i = 0; i <= n; ++i)
-      {
-        const double Z = -thickness / 2. + thickness * i / n;
-        sum += (i == 0 || i == n ? 0.5 : 1.) * thickness / n * f(Z);
-      }
-      return sum;
+      return through_thickness(thickness,
+                               [this](double Z)
+                               { return stress(Z) * rho / radius(Z); });
     }
 
     const PlaneStrainFibre &fibre;
