@@ -10,6 +10,8 @@
 #
 #   benchmarks/square_cup_meshes.sh [TRAVEL_MM [N ...]]
 # TRAVEL_MM defaults to 8.1, N to "25 50 100 150" (1 250 ... 45 000 cells).
+# SOLVER=AMG (or UMFPACK, KLU) in the environment sets Linear solver/Type
+# (default MUMPS; doc/results.md § Algebraic multigrid).
 # DEEPDRAW selects the executable (default build/deepdraw). Outputs and
 # wall_time.png go to a fresh temporary directory (printed, kept). The
 # figures are wall-clock times: run it on an otherwise idle machine.
@@ -19,6 +21,7 @@ deepdraw=${DEEPDRAW:-$source_dir/build/deepdraw}
 travel=${1:-8.1}
 [ $# -gt 0 ] && shift
 meshes=${*:-25 50 100 150}
+solver=${SOLVER:-MUMPS}
 output=$(mktemp -d /tmp/square_cup_meshes.XXXXXX)
 [ -x "$deepdraw" ] || { echo "square_cup_meshes.sh: $deepdraw missing" >&2; exit 1; }
 
@@ -33,6 +36,9 @@ subsection Geometry
 end
 subsection Process
   set Final load = $travel
+end
+subsection Linear solver
+  set Type = $solver
 end
 PRM
   start=$(date +%s.%N)

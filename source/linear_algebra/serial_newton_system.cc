@@ -3,6 +3,7 @@
 // the positions of their entries in the matrix's values (D99), solved by
 // solver::LinearSolver.
 #include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/mapping_q1.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deepdraw/linear_algebra/newton_linear_system.h>
@@ -19,7 +20,8 @@ namespace deepdraw
       public:
         explicit SerialNewtonSystem(
           const solver::LinearSolverParameters &parameters)
-            : linear_solver(parameters)
+            : iterative(parameters.iterative())
+            , linear_solver(parameters)
         {
         }
 
@@ -57,6 +59,8 @@ namespace deepdraw
               const std::vector<types::global_dof_index> &bordered,
               const std::vector<types::global_dof_index> &decoupled) override
         {
+          if (iterative && rigid_body_modes_stale)
+            update_rigid_body_modes();
           linear_solver.solve(system_matrix,
                               system_rhs,
                               solution,
@@ -68,6 +72,8 @@ namespace deepdraw
         reset_reduction() override
         {
           linear_solver.reset_reduction();
+          // The mesh moves between increments (updated Lagrangian).
+          rigid_body_modes_stale = true;
         }
 
         solver::LinearSolver::Statistics
@@ -110,6 +116,10 @@ namespace deepdraw
         // cell_matrix_positions for the dofs of the layout.
         void
         find_cell_matrix_positions(const DoFHandler<3> &dof_handler);
+        // Type AMG: the support points of the displacement unknowns in the
+        // mesh's current configuration, for the rigid-body modes (D193).
+        void
+        update_rigid_body_modes();
 
         SparsityPattern      sparsity_pattern;
         SparseMatrix<double> system_matrix;
@@ -120,8 +130,32 @@ namespace deepdraw
         // Rebuilt with the sparsity pattern.
         std::vector<unsigned int> cell_matrix_positions;
         unsigned int              dofs_per_cell = 0;
+        const DoFHandler<3>      *dof_handler   = nullptr;
+        const bool                iterative;
+        bool                      rigid_body_modes_stale = true;
         solver::LinearSolver      linear_solver;
       };
+
+
+      void
+      SerialNewtonSystem::update_rigid_body_modes()
+      {
+        std::vector<Point<3>> points(dof_handler->n_dofs());
+        DoFTools::map_dofs_to_support_points(MappingQ1<3>(),
+                                             *dof_handler,
+                                             points);
+        std::vector<unsigned char> components(points.size());
+        for (const auto &cell : dof_handler->active_cell_iterators())
+        {
+          std::vector<types::global_dof_index> dofs(dofs_per_cell);
+          cell->get_dof_indices(dofs);
+          for (unsigned int i = 0; i < dofs_per_cell; ++i)
+            components[dofs[i]]
+              = dof_handler->get_fe().system_to_component_index(i).first;
+        }
+        linear_solver.set_rigid_body_modes(points, components);
+        rigid_body_modes_stale = false;
+      }
 
 
       void
@@ -129,6 +163,8 @@ namespace deepdraw
       {
         const DoFHandler<3>          &dof_handler = *layout.dof_handler;
         const types::global_dof_index n_u         = dof_handler.n_dofs();
+        this->dof_handler                         = &dof_handler;
+        rigid_body_modes_stale                    = true;
         const types::global_dof_index n           = layout.n_unknowns;
         // Contact unknowns follow the displacements (block system of
         // reference Eq. 19).

@@ -155,6 +155,17 @@ namespace deepdraw
           + std::to_string(statistics.gmres_iterations)
           + " GMRES iterations in all)");
       }
+      if (parameters.linear_solver.iterative())
+      {
+        const auto statistics = model->linear_system().statistics();
+        summaries.push_back(
+          "linear solver: " + std::to_string(statistics.amg_hierarchies)
+          + " AMG hierarchies, " + std::to_string(statistics.amg_solves)
+          + " GMRES solves (" + std::to_string(statistics.gmres_iterations)
+          + " iterations in all), " + std::to_string(statistics.amg_fallbacks)
+          + " systems solved by MUMPS after GMRES failed, "
+          + std::to_string(statistics.factorizations) + " factorisations");
+      }
       console.finished(*view, wall_timer.wall_time(), summaries);
     }
 

@@ -190,6 +190,19 @@ namespace deepdraw
     }
 
 
+    void
+    BorderedFactorization::reduce(
+      const SparseMatrix<double>                 &matrix,
+      const std::vector<types::global_dof_index> &bordered,
+      const std::vector<types::global_dof_index> &decoupled)
+    {
+      update_reduction(matrix.get_sparsity_pattern(), bordered, decoupled);
+      while (!copy_reduced(matrix))
+      {
+      }
+    }
+
+
     bool
     BorderedFactorization::copy_reduced(const SparseMatrix<double> &matrix)
     {
@@ -307,10 +320,7 @@ namespace deepdraw
         return;
       }
 
-      update_reduction(matrix.get_sparsity_pattern(), bordered, decoupled);
-      while (!copy_reduced(matrix))
-      {
-      }
+      reduce(matrix, bordered, decoupled);
       const types::global_dof_index n_m = reduced_pattern.n_rows();
       const unsigned int            n_b = bordered.size();
       statistics.factorized_unknowns    = n_m;

@@ -529,5 +529,17 @@ namespace deepdraw
     {
       return coupled_pairs;
     }
+
+
+    std::vector<std::array<types::global_dof_index, 3>>
+    MultiplierCondensation::coupled_nodes() const
+    {
+      std::vector<std::array<types::global_dof_index, 3>> nodes;
+      nodes.reserve(coupled_pairs);
+      for (unsigned int k = 0; k < local_blocks.size(); ++k)
+        if (local_blocks[k].coupled)
+          nodes.push_back(blocks[k].displacement);
+      return nodes;
+    }
   } // namespace solver
 } // namespace deepdraw

@@ -81,6 +81,12 @@ namespace deepdraw
         bordered,
         left_out
       };
+      // Splits `matrix` into M (reduced_matrix), C, D and E (border_columns,
+      // border_rows, corner), the reduction rebuilt if needed.
+      void
+      reduce(const SparseMatrix<double>                 &matrix,
+             const std::vector<types::global_dof_index> &bordered,
+             const std::vector<types::global_dof_index> &decoupled);
       // Rebuilds role, reduced_index and the reduced pattern if needed.
       void
       update_reduction(const SparsityPattern                      &pattern,

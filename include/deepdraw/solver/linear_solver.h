@@ -5,8 +5,10 @@
 #define deepdraw_solver_linear_solver_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
+#include <deepdraw/solver/amg_solver.h>
 #include <deepdraw/solver/multiplier_condensation.h>
 #include <memory>
 #include <string>
@@ -18,6 +20,7 @@ namespace deepdraw
     using namespace dealii;
 
     struct BorderedFactorization;
+    class BorderedAmgSolver;
 
     struct LinearSolverParameters
     {
@@ -38,6 +41,16 @@ namespace deepdraw
       double       forcing_term          = 0.1;
       double       smallest_forcing_term = 0.1;
       unsigned int reuse_iterations      = 10;
+      // Type AMG: the condensed system by GMRES with smoothed aggregation
+      // (D193); the systems that cannot be condensed, and those GMRES does
+      // not solve, by MUMPS.
+      AmgParameters amg;
+
+      bool
+      iterative() const
+      {
+        return type == "AMG";
+      }
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -100,6 +113,12 @@ namespace deepdraw
       void
       reset_reduction();
 
+      // Type AMG: the point and component of each displacement unknown in
+      // the current configuration, for the rigid-body modes.
+      void
+      set_rigid_body_modes(const std::vector<Point<3>>      &points,
+                           const std::vector<unsigned char> &components);
+
       // Counts since construction, and the sizes of the last solve.
       struct Statistics
       {
@@ -115,6 +134,11 @@ namespace deepdraw
         // Solves by GMRES with kept factors, and its iterations (D185).
         unsigned int reused_solves    = 0;
         unsigned int gmres_iterations = 0;
+        // Type AMG: hierarchies built, condensed systems solved by GMRES,
+        // and condensed systems solved by MUMPS instead (D193).
+        unsigned int amg_hierarchies = 0;
+        unsigned int amg_solves      = 0;
+        unsigned int amg_fallbacks   = 0;
       };
       Statistics
       statistics() const;
@@ -122,6 +146,7 @@ namespace deepdraw
     private:
       void
       solve_with(BorderedFactorization                      &data,
+                 const std::string                          &type,
                  const SparseMatrix<double>                 &matrix,
                  const Vector<double>                       &rhs,
                  Vector<double>                             &solution,
@@ -136,6 +161,12 @@ namespace deepdraw
                               Vector<double>             &solution);
       void
       update_forcing_term(double residual_norm);
+      // The condensed system by AMG, or by MUMPS where GMRES fails.
+      void
+      solve_condensed_iteratively(Vector<double> &condensed_solution);
+      // The direct solver of the systems AMG does not take.
+      std::string
+      direct_type() const;
 
       LinearSolverParameters parameters;
       // The whole system's factorisation and that of the condensed one,
@@ -143,7 +174,9 @@ namespace deepdraw
       std::unique_ptr<BorderedFactorization>  implementation;
       std::unique_ptr<BorderedFactorization>  condensed_implementation;
       std::unique_ptr<MultiplierCondensation> condensation;
-      Statistics                              solve_statistics;
+      // Type AMG: the condensed system's iterative solver.
+      std::unique_ptr<BorderedAmgSolver> amg;
+      Statistics                         solve_statistics;
       // Eisenstat-Walker: this solve's forcing term and the last |F|.
       double forcing_term           = 0.;
       double previous_residual_norm = 0.;

@@ -80,6 +80,10 @@ namespace deepdraw
       // Pairs condensed at the last successful condense().
       unsigned int
       n_coupled_pairs() const;
+      // The displacement unknowns of the nodes of those pairs (stick or
+      // slip), whose condensed rows replaced the node's own.
+      std::vector<std::array<types::global_dof_index, 3>>
+      coupled_nodes() const;
 
     private:
       // Block k restricted to its free (unconstrained) components: the
