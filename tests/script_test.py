@@ -189,6 +189,17 @@ def same_tables(expected, actual, what="the uninterrupted run"):
     return failures
 
 
+def write_linear_solver_case(work, name, included, settings, extra=""):
+    """Writes work/name: an include of the prm `included`, then `extra`,
+    then the `Linear solver` settings (name, value pairs); returns name (the
+    solver tests run one model with several solvers)."""
+    text = "include %s\n%s" % (included, extra)
+    text += "subsection Linear solver\n%send\n" % "".join(
+        "  set %s = %s\n" % item for item in settings)
+    (work / name).write_text(text)
+    return name
+
+
 def close_tables(expected, actual, what, relative=1e-12,
                  skipped=("symbolic_analyses",)):
     """As same_tables, but for runs on different machines (D190): the text

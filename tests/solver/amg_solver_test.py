@@ -46,15 +46,14 @@ TOLERANCE_CUP = 1e-8
 
 def write_prm(source, work, name, settings, case=("contact",
                                                    "newton_cylinder_friction")):
-    text = "include %s.prm\n" % source.joinpath("tests", *case)
+    extra = ""
     if case[0] == "regression":
-        text += "subsection Process\n  set Final load = 1\nend\n"
-        text += ("subsection Output\n  set Thickness profile travels = 1\n"
+        extra = ("subsection Process\n  set Final load = 1\nend\n"
+                 "subsection Output\n  set Thickness profile travels = 1\n"
                  "end\n")
-    text += "subsection Linear solver\n%send\n" % "".join(
-        "  set %s = %s\n" % item for item in settings)
-    (work / name).write_text(text)
-    return name
+    return script_test.write_linear_solver_case(
+        work, name, "%s.prm" % source.joinpath("tests", *case), settings,
+        extra)
 
 
 def amg_counts(log):

@@ -40,12 +40,9 @@ TABLES = ("punch_force.csv", "draw_in.csv", "tools.csv",
 
 
 def write_prm(source, work, name, settings):
-    text = "include %s\n" % (source / "tests" / "regression" /
-                             "square_cup_short.prm")
-    text += "subsection Linear solver\n%send\n" % "".join(
-        "  set %s = %s\n" % item for item in settings)
-    (work / name).write_text(text)
-    return name
+    return script_test.write_linear_solver_case(
+        work, name, source / "tests" / "regression" / "square_cup_short.prm",
+        settings)
 
 
 def solver_counts(log):
