@@ -144,10 +144,10 @@ namespace deepdraw
         DoFTools::map_dofs_to_support_points(MappingQ1<3>(),
                                              *dof_handler,
                                              points);
-        std::vector<unsigned char> components(points.size());
+        std::vector<unsigned char>           components(points.size());
+        std::vector<types::global_dof_index> dofs(dofs_per_cell);
         for (const auto &cell : dof_handler->active_cell_iterators())
         {
-          std::vector<types::global_dof_index> dofs(dofs_per_cell);
           cell->get_dof_indices(dofs);
           for (unsigned int i = 0; i < dofs_per_cell; ++i)
             components[dofs[i]]
