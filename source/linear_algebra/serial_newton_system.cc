@@ -131,28 +131,35 @@ namespace deepdraw
         std::vector<unsigned int> cell_matrix_positions;
         unsigned int              dofs_per_cell = 0;
         const DoFHandler<3>      *dof_handler   = nullptr;
-        const bool                iterative;
-        bool                      rigid_body_modes_stale = true;
-        solver::LinearSolver      linear_solver;
+        // Type AMG: the component of each displacement unknown.
+        std::vector<unsigned char> components;
+        const bool                 iterative;
+        bool                       rigid_body_modes_stale = true;
+        solver::LinearSolver       linear_solver;
       };
 
 
       void
       SerialNewtonSystem::update_rigid_body_modes()
       {
+        // The components depend on the numbering alone: found once per
+        // layout, the points once per increment.
+        if (components.size() != dof_handler->n_dofs())
+        {
+          components.resize(dof_handler->n_dofs());
+          std::vector<types::global_dof_index> dofs(dofs_per_cell);
+          for (const auto &cell : dof_handler->active_cell_iterators())
+          {
+            cell->get_dof_indices(dofs);
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              components[dofs[i]]
+                = dof_handler->get_fe().system_to_component_index(i).first;
+          }
+        }
         std::vector<Point<3>> points(dof_handler->n_dofs());
         DoFTools::map_dofs_to_support_points(MappingQ1<3>(),
                                              *dof_handler,
                                              points);
-        std::vector<unsigned char>           components(points.size());
-        std::vector<types::global_dof_index> dofs(dofs_per_cell);
-        for (const auto &cell : dof_handler->active_cell_iterators())
-        {
-          cell->get_dof_indices(dofs);
-          for (unsigned int i = 0; i < dofs_per_cell; ++i)
-            components[dofs[i]]
-              = dof_handler->get_fe().system_to_component_index(i).first;
-        }
         linear_solver.set_rigid_body_modes(points, components);
         rigid_body_modes_stale = false;
       }
@@ -165,7 +172,8 @@ namespace deepdraw
         const types::global_dof_index n_u         = dof_handler.n_dofs();
         this->dof_handler                         = &dof_handler;
         rigid_body_modes_stale                    = true;
-        const types::global_dof_index n           = layout.n_unknowns;
+        components.clear();
+        const types::global_dof_index n = layout.n_unknowns;
         // Contact unknowns follow the displacements (block system of
         // reference Eq. 19).
         DynamicSparsityPattern displacement_dsp(n_u, n_u);

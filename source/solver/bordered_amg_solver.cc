@@ -16,25 +16,20 @@ namespace deepdraw
       const SparseMatrix<double>                 &matrix,
       const std::vector<types::global_dof_index> &bordered)
     {
-      this->bordered = bordered;
+      split.kept_size     = 0;
+      split.kept_bordered = bordered;
       split.reduce(matrix, bordered, {});
       amg_solver.initialize(split.reduced_matrix);
-      const unsigned int n_b = bordered.size();
-      w.resize(n_b);
+      auto &w = split.kept_inverse_columns;
+      w.resize(bordered.size());
       iterations = 0;
-      for (unsigned int k = 0; k < n_b; ++k)
+      for (unsigned int k = 0; k < bordered.size(); ++k)
       {
         if (!amg_solver.solve(split.border_columns[k], w[k]))
           return false;
         iterations += amg_solver.last_iterations();
       }
-      // S = E - D W, inverted once.
-      schur_inverse = split.corner;
-      for (unsigned int k = 0; k < n_b; ++k)
-        for (unsigned int l = 0; l < n_b; ++l)
-          schur_inverse(k, l) -= split.border_rows[k] * w[l];
-      if (n_b > 0)
-        schur_inverse.gauss_jordan();
+      split.keep_schur_complement(matrix);
       reduced_src.reinit(split.reduced_matrix.m());
       reduced_dst.reinit(split.reduced_matrix.m());
       return true;
@@ -45,25 +40,10 @@ namespace deepdraw
     BorderedAmgSolver::vmult(Vector<double>       &dst,
                              const Vector<double> &src) const
     {
-      // y = V-cycle(f), z = S^-1 (g - D y), x = y - W z.
-      const auto &role          = split.role;
-      const auto &reduced_index = split.reduced_index;
-      for (types::global_dof_index i = 0; i < src.size(); ++i)
-        if (role[i] == BorderedFactorization::kept)
-          reduced_src[reduced_index[i]] = src[i];
+      // y = V-cycle(f), then z = S^-1 (g - D y), x = y - W z.
+      split.restrict_to_reduced(src, reduced_src);
       amg_solver.vmult(reduced_dst, reduced_src);
-      const unsigned int n_b = bordered.size();
-      Vector<double>     border_rhs(n_b), z(n_b);
-      for (unsigned int k = 0; k < n_b; ++k)
-        border_rhs[k] = src[bordered[k]] - split.border_rows[k] * reduced_dst;
-      if (n_b > 0)
-        schur_inverse.vmult(z, border_rhs);
-      for (unsigned int k = 0; k < n_b; ++k)
-        reduced_dst.add(-z[k], w[k]);
-      for (types::global_dof_index i = 0; i < src.size(); ++i)
-        dst[i] = role[i] == BorderedFactorization::kept
-                   ? reduced_dst[reduced_index[i]]
-                   : z[split.border_position[i]];
+      split.expand_solution(reduced_dst, src, dst);
     }
 
 

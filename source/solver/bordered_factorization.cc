@@ -322,25 +322,33 @@ namespace deepdraw
 
       reduce(matrix, bordered, decoupled);
       const types::global_dof_index n_m = reduced_pattern.n_rows();
-      const unsigned int            n_b = bordered.size();
       statistics.factorized_unknowns    = n_m;
       factorize(type, reduced_matrix);
       ++statistics.numeric_factorizations;
       // columns: f, then C (the border columns); M^-1 of all at once.
       std::vector<Vector<double>> columns(1, Vector<double>(n_m));
-      for (types::global_dof_index i = 0; i < n; ++i)
-        if (role[i] == kept)
-          columns[0][reduced_index[i]] = rhs[i];
+      restrict_to_reduced(rhs, columns[0]);
       columns.insert(columns.end(),
                      border_columns.begin(),
                      border_columns.end());
       back_substitute(columns);
       Vector<double> y;
       y.swap(columns[0]);
-      // S = E - D M^-1 C, kept inverted with M^-1 C.
-      kept_schur_inverse = corner;
       kept_inverse_columns.assign(std::make_move_iterator(columns.begin() + 1),
                                   std::make_move_iterator(columns.end()));
+      keep_schur_complement(matrix);
+      expand_solution(y, rhs, solution);
+    }
+
+
+    void
+    BorderedFactorization::keep_schur_complement(
+      const SparseMatrix<double> &matrix)
+    {
+      // S = E - D M^-1 C, kept inverted with M^-1 C.
+      const types::global_dof_index n   = matrix.m();
+      const unsigned int            n_b = kept_inverse_columns.size();
+      kept_schur_inverse                = corner;
       for (unsigned int k = 0; k < n_b; ++k)
         for (unsigned int l = 0; l < n_b; ++l)
           kept_schur_inverse(k, l) -= border_rows[k] * kept_inverse_columns[l];
@@ -351,7 +359,16 @@ namespace deepdraw
         if (role[i] == left_out)
           kept_left_out_diagonal[i] = matrix.diag_element(i);
       kept_size = n;
-      expand_solution(y, rhs, solution);
+    }
+
+
+    void
+    BorderedFactorization::restrict_to_reduced(const Vector<double> &full,
+                                               Vector<double> &reduced) const
+    {
+      for (types::global_dof_index i = 0; i < full.size(); ++i)
+        if (role[i] == kept)
+          reduced[reduced_index[i]] = full[i];
     }
 
 
@@ -366,9 +383,7 @@ namespace deepdraw
         return;
       }
       Vector<double> reduced_rhs(reduced_pattern.n_rows()), y;
-      for (types::global_dof_index i = 0; i < kept_size; ++i)
-        if (role[i] == kept)
-          reduced_rhs[reduced_index[i]] = rhs[i];
+      restrict_to_reduced(rhs, reduced_rhs);
       back_substitute(reduced_rhs, y);
       expand_solution(y, rhs, solution);
     }

@@ -8,7 +8,6 @@
 #ifndef deepdraw_solver_bordered_amg_solver_h
 #define deepdraw_solver_bordered_amg_solver_h
 
-#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 #include <deepdraw/solver/amg_solver.h>
@@ -57,14 +56,12 @@ namespace deepdraw
 
     private:
       AmgParameters parameters;
-      // Only its split of the matrix into M, C, D and E is used.
-      BorderedFactorization                split;
-      AmgSolver                            amg_solver;
-      std::vector<types::global_dof_index> bordered;
-      std::vector<Vector<double>>          w;
-      FullMatrix<double>                   schur_inverse;
-      mutable Vector<double>               reduced_src, reduced_dst;
-      unsigned int                         iterations = 0;
+      // Its split of the matrix into M, C, D and E, and its Schur
+      // complement of W = M^-1 C (kept_inverse_columns); no factors.
+      BorderedFactorization  split;
+      AmgSolver              amg_solver;
+      mutable Vector<double> reduced_src, reduced_dst;
+      unsigned int           iterations = 0;
     };
   } // namespace solver
 } // namespace deepdraw

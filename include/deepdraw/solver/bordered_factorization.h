@@ -134,7 +134,15 @@ namespace deepdraw
       FullMatrix<double>                   kept_schur_inverse;
       Vector<double>                       kept_left_out_diagonal;
 
-    private:
+      // From kept_inverse_columns (M^-1 C of kept_bordered): the inverse
+      // Schur complement and the diagonal of the unknowns left out, kept
+      // for expand_solution() on systems of matrix's size.
+      void
+      keep_schur_complement(const SparseMatrix<double> &matrix);
+      // The kept unknowns of a whole-system vector, in M's numbering.
+      void
+      restrict_to_reduced(const Vector<double> &full,
+                          Vector<double>       &reduced) const;
       // From M^-1 f (y, overwritten) to the solution of the whole system:
       // the bordered unknowns by the kept Schur complement, those left out
       // by their diagonal.
