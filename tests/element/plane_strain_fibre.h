@@ -46,6 +46,7 @@ namespace bending_reference
                      const unsigned int n_steps = 20000)
         : eps_max(eps_max)
         , table(n_steps + 1, 0.)
+        , coupling_table(n_steps + 1, 0.)
     {
       ParameterHandler prm;
       prm.enter_subsection("Material");
@@ -70,8 +71,11 @@ namespace bending_reference
             break;
           increment[2][2] -= next.stress[2][2] / tangent[2][2][2][2];
         }
-        state    = next;
-        table[k] = state.stress[0][0];
+        state             = next;
+        table[k]          = state.stress[0][0];
+        coupling_table[k] = tangent[0][0][2][2] / tangent[2][2][2][2];
+        if (k == 1)
+          coupling_table[0] = coupling_table[1];
       }
     }
 
@@ -85,6 +89,18 @@ namespace bending_reference
       const auto         k     = std::min<unsigned int>(s, n - 1);
       const double       value = table[k] + (s - k) * (table[k + 1] - table[k]);
       return eps < 0. ? -value : value;
+    }
+
+    // d sigma_xx / d sigma_zz at fixed eps_xx, eps_yy (the step's tangent):
+    // nu / (1 - nu) while elastic, near 1 once plastic.
+    double
+    coupling(const double eps) const
+    {
+      const unsigned int n = coupling_table.size() - 1;
+      const double       s = std::abs(eps) / eps_max * n;
+      const auto         k = std::min<unsigned int>(s, n - 1);
+      return coupling_table[k]
+             + (s - k) * (coupling_table[k + 1] - coupling_table[k]);
     }
 
     // b int sigma_xx(ln(1 + kappa z)) z dz over the thickness t
@@ -107,7 +123,7 @@ namespace bending_reference
 
   private:
     double              eps_max;
-    std::vector<double> table;
+    std::vector<double> table, coupling_table;
   };
 } // namespace bending_reference
 

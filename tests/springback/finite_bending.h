@@ -10,7 +10,13 @@
 // kappa is the radius of the fibre Z = 0 (the curvature a test measures) and
 // rho follows from a zero axial force, int sigma dr = 0. The zero-strain
 // fibre is then not the mid-plane: the outer fibres thin, the inner ones
-// thicken, and the Cauchy stresses act on those thicknesses.
+// thicken, and the Cauchy stresses act on those thicknesses. The curved
+// fibres need a radial stress, d(r sigma_r)/dr = sigma_theta with sigma_r
+// = 0 on both faces (-1.5 MPa at the mid-plane of the test's strip,
+// kappa t / 2 of the fibre stress), which shifts each fibre's stress by
+// d sigma_xx / d sigma_zz times sigma_r (nu / (1 - nu) while elastic, about
+// 1 once plastic: the material's tangent along the fibre's path), solved
+// with the zero axial force by a fixed point (D194).
 // Released: an elastic curved bar of the loaded section unloaded by -M
 // (Winkler: the strain increment k (r - r_n) / r, r_n = t' / ln(r_o / r_i)
 // for zero axial force), plane strain modulus E' = E / (1 - nu^2).
@@ -20,6 +26,7 @@
 #include "element/plane_strain_fibre.h"
 
 #include <cmath>
+#include <vector>
 
 namespace bending_reference
 {
@@ -35,12 +42,30 @@ namespace bending_reference
         , thickness(thickness)
         , r_m(1. / kappa)
     {
-      // Bisection on the axial force: more rho, shorter fibres.
-      double low = 0.98 * r_m, high = 1.02 * r_m;
-      for (unsigned int i = 0; i < 200; ++i)
+      radial.assign(n_radial + 1, 0.);
+      for (unsigned int pass = 0; pass < 6; ++pass)
       {
-        rho                               = 0.5 * (low + high);
-        (axial_force() > 0. ? low : high) = rho;
+        // Bisection on the axial force: more rho, shorter fibres.
+        double low = 0.98 * r_m, high = 1.02 * r_m;
+        for (unsigned int i = 0; i < 200; ++i)
+        {
+          rho                               = 0.5 * (low + high);
+          (axial_force() > 0. ? low : high) = rho;
+        }
+        // d(r sigma_r)/dr = sigma_theta, sigma_r(r_i) = 0: r sigma_r =
+        // int sigma_theta rho / r dZ from the inner face.
+        std::vector<double> next(n_radial + 1, 0.);
+        double              integral = 0.;
+        const double        dZ       = thickness / n_radial;
+        for (unsigned int i = 1; i <= n_radial; ++i)
+        {
+          const double Z0 = -thickness / 2. + (i - 1) * dZ, Z1 = Z0 + dZ;
+          integral += 0.5 * dZ
+                      * (stress(Z0) * rho / radius(Z0)
+                         + stress(Z1) * rho / radius(Z1));
+          next[i] = integral / radius(Z1);
+        }
+        radial = next;
       }
       // M = int sigma r dr = rho int sigma dZ (r dr = rho dZ), about the
       // centre; with no axial force about any point.
@@ -70,7 +95,16 @@ namespace bending_reference
     double
     stress(const double Z) const
     {
-      return fibre.stress(std::log(radius(Z) / rho));
+      const double eps = std::log(radius(Z) / rho);
+      return fibre.stress(eps) + fibre.coupling(eps) * radial_stress(Z);
+    }
+
+    double
+    radial_stress(const double Z) const
+    {
+      const double s = (Z / thickness + 0.5) * n_radial;
+      const auto   k = std::min<unsigned int>(std::max(s, 0.), n_radial - 1);
+      return radial[k] + (s - k) * (radial[k + 1] - radial[k]);
     }
 
     // sigma_xx of the fibre Z after the release.
@@ -94,10 +128,12 @@ namespace bending_reference
                                { return stress(Z) * rho / radius(Z); });
     }
 
-    const PlaneStrainFibre &fibre;
-    double                  thickness, r_m, rho = 0.;
-    double                  r_inner = 0., r_outer = 0., r_neutral = 0.;
-    double                  unloading_per_radius = 0.; // E' k, MPa
+    const PlaneStrainFibre       &fibre;
+    double                        thickness, r_m, rho = 0.;
+    double                        r_inner = 0., r_outer = 0., r_neutral = 0.;
+    double                        unloading_per_radius = 0.; // E' k, MPa
+    static constexpr unsigned int n_radial             = 4000;
+    std::vector<double>           radial;
   };
 } // namespace bending_reference
 
