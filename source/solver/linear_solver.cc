@@ -224,6 +224,7 @@ namespace deepdraw
         // is the displacement block, bordered by the tool positions.
         BorderedFactorization &condensed = *condensed_implementation;
         Vector<double>         condensed_solution;
+        const unsigned int     gmres_solves = solve_statistics.amg_solves;
         if (parameters.iterative())
           solve_condensed_iteratively(condensed_solution);
         else
@@ -236,8 +237,11 @@ namespace deepdraw
                      {});
         condensation->expand(matrix, rhs, condensed_solution, solution);
         ++solve_statistics.condensed_solves;
+        // Nothing factorised when GMRES solved the system.
         solve_statistics.factorized_unknowns
-          = condensed.statistics.factorized_unknowns;
+          = solve_statistics.amg_solves > gmres_solves
+              ? 0
+              : condensed.statistics.factorized_unknowns;
         return;
       }
       solve_with(*implementation,

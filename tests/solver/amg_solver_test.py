@@ -69,6 +69,18 @@ def contact_states(directory):
             max(int(r["slip_pairs"]) for r in rows))
 
 
+def nothing_factorised(directory):
+    """With every system solved by GMRES, statistics.csv's
+    factorized_unknowns is 0 in every increment (no factorisation)."""
+    rows = list(csv.DictReader(open(directory / "statistics.csv")))
+    factorised = [r["factorized_unknowns"] for r in rows
+                  if float(r["factorized_unknowns"]) != 0.]
+    if factorised:
+        return ["%s: factorized_unknowns %s with no fallback, expected 0"
+                % (directory.name, factorised[:3])]
+    return []
+
+
 def main():
     args, source, work = script_test.start(__doc__)
     failures = []
@@ -98,6 +110,7 @@ def main():
     failures += script_test.close_tables(
         work / "direct", work / "amg", "the MUMPS run", TOLERANCE,
         ("symbolic_analyses", "factorized_unknowns"))
+    failures += nothing_factorised(work / "amg")
 
     log = run([args.deepdraw, fallback, "--output-directory", "fallback"],
               work, tail=300)
@@ -128,6 +141,7 @@ def main():
     failures += script_test.close_tables(
         work / "cup_direct", work / "cup_amg", "the MUMPS run", TOLERANCE_CUP,
         ("symbolic_analyses", "factorized_unknowns"))
+    failures += nothing_factorised(work / "cup_amg")
     script_test.finish(failures)
 
 
