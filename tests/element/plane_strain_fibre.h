@@ -47,6 +47,7 @@ namespace bending_reference
         : eps_max(eps_max)
         , table(n_steps + 1, 0.)
         , coupling_table(n_steps + 1, 0.)
+        , thickness_table(n_steps + 1, 0.)
     {
       ParameterHandler prm;
       prm.enter_subsection("Material");
@@ -71,9 +72,10 @@ namespace bending_reference
             break;
           increment[2][2] -= next.stress[2][2] / tangent[2][2][2][2];
         }
-        state             = next;
-        table[k]          = state.stress[0][0];
-        coupling_table[k] = tangent[0][0][2][2] / tangent[2][2][2][2];
+        state              = next;
+        table[k]           = state.stress[0][0];
+        coupling_table[k]  = tangent[0][0][2][2] / tangent[2][2][2][2];
+        thickness_table[k] = thickness_table[k - 1] + increment[2][2];
         if (k == 1)
           coupling_table[0] = coupling_table[1];
       }
@@ -91,16 +93,21 @@ namespace bending_reference
       return eps < 0. ? -value : value;
     }
 
+    // The logarithmic thickness strain eps_zz of the fibre at eps, odd in
+    // eps: elastic -nu / (1 - nu) eps, towards -eps once plastic.
+    double
+    thickness_strain(const double eps) const
+    {
+      const double value = interpolate(thickness_table, eps);
+      return eps < 0. ? -value : value;
+    }
+
     // d sigma_xx / d sigma_zz at fixed eps_xx, eps_yy (the step's tangent):
     // nu / (1 - nu) while elastic, near 1 once plastic.
     double
     coupling(const double eps) const
     {
-      const unsigned int n = coupling_table.size() - 1;
-      const double       s = std::abs(eps) / eps_max * n;
-      const auto         k = std::min<unsigned int>(s, n - 1);
-      return coupling_table[k]
-             + (s - k) * (coupling_table[k + 1] - coupling_table[k]);
+      return interpolate(coupling_table, eps);
     }
 
     // b int sigma_xx(ln(1 + kappa z)) z dz over the thickness t
@@ -123,7 +130,17 @@ namespace bending_reference
 
   private:
     double              eps_max;
-    std::vector<double> table, coupling_table;
+    std::vector<double> table, coupling_table, thickness_table;
+
+    // A table at |eps|, linear between its entries.
+    double
+    interpolate(const std::vector<double> &values, const double eps) const
+    {
+      const unsigned int n = values.size() - 1;
+      const double       s = std::abs(eps) / eps_max * n;
+      const auto         k = std::min<unsigned int>(s, n - 1);
+      return values[k] + (s - k) * (values[k + 1] - values[k]);
+    }
   };
 } // namespace bending_reference
 

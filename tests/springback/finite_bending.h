@@ -3,20 +3,21 @@
 // compare with, to second order in kappa t.
 //
 // Loaded (Hill, The Mathematical Theory of Plasticity, 1950, ch. VII):
-// plane sections stay plane and radial; the fibres keep their volume
-// (lambda_x lambda_z = 1, elastic volume change neglected), so the fibre at
-// reference height Z from the mid-plane lies at the radius
-// r(Z) = sqrt(r_m^2 + 2 rho Z) with the stretch lambda = r / rho; r_m = 1 /
-// kappa is the radius of the fibre Z = 0 (the curvature a test measures) and
-// rho follows from a zero axial force, int sigma dr = 0. The zero-strain
-// fibre is then not the mid-plane: the outer fibres thin, the inner ones
-// thicken, and the Cauchy stresses act on those thicknesses. The curved
-// fibres need a radial stress, d(r sigma_r)/dr = sigma_theta with sigma_r
-// = 0 on both faces (-1.5 MPa at the mid-plane of the test's strip,
-// kappa t / 2 of the fibre stress), which shifts each fibre's stress by
-// d sigma_xx / d sigma_zz times sigma_r (nu / (1 - nu) while elastic, about
-// 1 once plastic: the material's tangent along the fibre's path), solved
-// with the zero axial force by a fixed point (D194).
+// plane sections stay plane and radial, so the fibre at reference height Z
+// from the mid-plane, at the radius r(Z), has the hoop stretch lambda_x =
+// r / rho; r_m = r(0) = 1 / kappa (the curvature a test measures) and rho
+// follows from a zero axial force, int sigma dr = 0. In plane strain the
+// fibres' spacing is their thickness stretch, dr/dZ = lambda_z, taken from
+// the fibre's own path (the elastic volume change kept: -nu / (1 - nu) of
+// the hoop strain while elastic, 1 / lambda_x once fully plastic; D194).
+// The zero-strain fibre is then not the mid-plane: the outer fibres thin,
+// the inner ones thicken, and the Cauchy stresses act on those
+// thicknesses. The curved fibres need a radial stress, d(r sigma_r)/dr =
+// sigma_theta with sigma_r = 0 on both faces (-1.5 MPa at the mid-plane of
+// the test's strip, kappa t / 2 of the fibre stress), which shifts each
+// fibre's stress by d sigma_xx / d sigma_zz times sigma_r (nu / (1 - nu)
+// while elastic, about 1 once plastic: the material's tangent along the
+// fibre's path), solved with the zero axial force by a fixed point (D194).
 // Released: an elastic curved bar of the loaded section unloaded by -M
 // (Winkler: the strain increment k (r - r_n) / r, r_n = t' / ln(r_o / r_i)
 // for zero axial force), plane strain modulus E' = E / (1 - nu^2).
@@ -43,35 +44,38 @@ namespace bending_reference
         , r_m(1. / kappa)
     {
       radial.assign(n_radial + 1, 0.);
+      radii.assign(n_radial + 1, r_m);
       for (unsigned int pass = 0; pass < 6; ++pass)
       {
         // Bisection on the axial force: more rho, shorter fibres.
         double low = 0.98 * r_m, high = 1.02 * r_m;
         for (unsigned int i = 0; i < 200; ++i)
         {
-          rho                               = 0.5 * (low + high);
+          rho = 0.5 * (low + high);
+          map_fibres();
           (axial_force() > 0. ? low : high) = rho;
         }
         // d(r sigma_r)/dr = sigma_theta, sigma_r(r_i) = 0: r sigma_r =
-        // int sigma_theta rho / r dZ from the inner face.
+        // int sigma_theta lambda_z dZ from the inner face.
         std::vector<double> next(n_radial + 1, 0.);
         double              integral = 0.;
-        const double        dZ       = thickness / n_radial;
         for (unsigned int i = 1; i <= n_radial; ++i)
         {
-          const double Z0 = -thickness / 2. + (i - 1) * dZ, Z1 = Z0 + dZ;
-          integral += 0.5 * dZ
-                      * (stress(Z0) * rho / radius(Z0)
-                         + stress(Z1) * rho / radius(Z1));
+          const double Z0 = height(i - 1), Z1 = height(i);
+          integral
+            += 0.5 * step()
+               * (stress(Z0) * stretch_z(Z0) + stress(Z1) * stretch_z(Z1));
           next[i] = integral / radius(Z1);
         }
         radial = next;
       }
-      // M = int sigma r dr = rho int sigma dZ (r dr = rho dZ), about the
-      // centre; with no axial force about any point.
-      moment = width * rho
-               * through_thickness(thickness,
-                                   [this](double Z) { return stress(Z); });
+      // M = int sigma r dr about the centre; with no axial force about any
+      // point.
+      moment
+        = width
+          * through_thickness(thickness,
+                              [this](double Z)
+                              { return stress(Z) * radius(Z) * stretch_z(Z); });
       r_inner          = radius(-thickness / 2.);
       r_outer          = radius(thickness / 2.);
       const double t   = r_outer - r_inner;
@@ -85,10 +89,11 @@ namespace bending_reference
       springback     = -kappa * k * r_neutral / r_m;
     }
 
+    // The radius of the fibre Z: dr/dZ = lambda_z, its thickness stretch.
     double
     radius(const double Z) const
     {
-      return std::sqrt(r_m * r_m + 2. * rho * Z);
+      return interpolate(radii, Z);
     }
 
     // The loaded Cauchy stress sigma_xx of the fibre Z.
@@ -102,9 +107,7 @@ namespace bending_reference
     double
     radial_stress(const double Z) const
     {
-      const double s = (Z / thickness + 0.5) * n_radial;
-      const auto   k = std::min<unsigned int>(std::max(s, 0.), n_radial - 1);
-      return radial[k] + (s - k) * (radial[k + 1] - radial[k]);
+      return interpolate(radial, Z);
     }
 
     // sigma_xx of the fibre Z after the release.
@@ -119,13 +122,67 @@ namespace bending_reference
     double springback; // kappa loaded - kappa released, 1 / mm
 
   private:
-    // int sigma dr = int sigma / lambda dZ.
+    // int sigma dr = int sigma lambda_z dZ.
     double
     axial_force() const
     {
       return through_thickness(thickness,
                                [this](double Z)
-                               { return stress(Z) * rho / radius(Z); });
+                               { return stress(Z) * stretch_z(Z); });
+    }
+
+    // lambda_z of the fibre at the radius r: the plane-strain fibre's
+    // thickness strain at its hoop strain ln(r / rho) (the elastic volume
+    // change kept: 1 / lambda_x only once plastic).
+    double
+    stretch_at(const double r) const
+    {
+      return std::exp(fibre.thickness_strain(std::log(r / rho)));
+    }
+
+    double
+    stretch_z(const double Z) const
+    {
+      return stretch_at(radius(Z));
+    }
+
+    // The radii of the grid's fibres for the current rho: dr/dZ = lambda_z
+    // from r(0) = r_m outwards and inwards (Heun's rule).
+    void
+    map_fibres()
+    {
+      const unsigned int middle = n_radial / 2;
+      radii[middle]             = r_m;
+      for (const int direction : {1, -1})
+        for (unsigned int i = middle; direction > 0 ? i < n_radial : i > 0;
+             i += direction)
+        {
+          const double h       = direction * step();
+          const double k1      = stretch_at(radii[i]);
+          const double k2      = stretch_at(radii[i] + h * k1);
+          radii[i + direction] = radii[i] + 0.5 * h * (k1 + k2);
+        }
+    }
+
+    double
+    step() const
+    {
+      return thickness / n_radial;
+    }
+
+    double
+    height(const unsigned int i) const
+    {
+      return -thickness / 2. + i * step();
+    }
+
+    // A grid table at the height Z, linear between its entries.
+    double
+    interpolate(const std::vector<double> &values, const double Z) const
+    {
+      const double s = (Z / thickness + 0.5) * n_radial;
+      const auto   k = std::min<unsigned int>(std::max(s, 0.), n_radial - 1);
+      return values[k] + (s - k) * (values[k + 1] - values[k]);
     }
 
     const PlaneStrainFibre       &fibre;
@@ -133,7 +190,7 @@ namespace bending_reference
     double                        r_inner = 0., r_outer = 0., r_neutral = 0.;
     double                        unloading_per_radius = 0.; // E' k, MPa
     static constexpr unsigned int n_radial             = 4000;
-    std::vector<double>           radial;
+    std::vector<double>           radial, radii;
   };
 } // namespace bending_reference
 
