@@ -26,6 +26,19 @@ main(int argc, char *argv[])
   // fixed order, so the results do not depend on the thread count (D61).
   dealii::Utilities::MPI::MPI_InitFinalize
     mpi(argc, argv, dealii::numbers::invalid_unsigned_int);
+  // One rank until parallel runs are built (issue 29, D195): under mpirun
+  // -np N every rank would run the whole simulation into one output folder.
+  if (const unsigned int ranks
+      = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+      ranks > 1)
+  {
+    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      std::cerr << "deepdraw: error in the input: started on " << ranks
+                << " MPI ranks; deepdraw runs on one rank (start it without "
+                   "mpirun, or with mpirun -np 1)"
+                << std::endl;
+    return 2;
+  }
   dealii::deal_II_exceptions::disable_abort_on_exception();
   // With a file size limit (ulimit -f) a write beyond it raises SIGXFSZ,
   // which kills the process; ignored, the write fails with EFBIG and is
