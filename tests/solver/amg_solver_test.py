@@ -3,7 +3,7 @@
 slip (issue 30, D193): tests/contact/newton_cylinder_friction.prm, the rigid
 cylinder pressed into an elastic block of 30 x 1 x 20 cells (3 906
 displacement unknowns: two levels of the hierarchy at the default coarse
-size of 2 000) with friction mu = 0.162, Newton tolerances 1e-11. Run three
+size of 2 000) with friction mu = 0.162, Newton tolerances 1e-11. Run four
 times:
 - with MUMPS, the reference;
 - with AMG (GMRES to 1e-10 with smoothed aggregation): the systems must be
@@ -13,6 +13,9 @@ times:
   forces, reactions, residuals, but for statistics.csv's count of
   factorised unknowns, 0 with AMG; measured 1.2e-12: the solves differ by
   the GMRES tolerance, far below the Newton tolerance);
+- with AMG allowed 11 GMRES iterations: some systems fall back, and an
+  increment whose last system GMRES solved writes factorized_unknowns 0
+  after one that factorised (mixed_solves);
 - with AMG allowed one GMRES iteration, which cannot reach 1e-10: every
   system falls back to MUMPS, so the run must be the reference run byte for
   byte (every CSV table but the wall times).
@@ -81,6 +84,32 @@ def nothing_factorised(directory):
     return []
 
 
+def mixed_solves(deepdraw, source, work):
+    """AMG allowed 11 GMRES iterations (the systems need 11.4 on average):
+    some systems fall back to MUMPS, the others do not, so an increment
+    whose last system GMRES solved follows one that factorised. Its
+    factorized_unknowns must be 0, which the count of an earlier fallback
+    never is; every other row the factorised size."""
+    prm = write_prm(source, work, "mixed.prm",
+                    [("Type", "AMG"), ("AMG tolerance", "1e-10"),
+                     ("AMG iterations", "11")])
+    counts = amg_counts(run([deepdraw, prm, "--output-directory", "mixed"],
+                            work, tail=300))
+    print("mixed: hierarchies, GMRES solves, iterations, fallbacks:", counts)
+    if counts is None or counts[1] == 0 or counts[3] == 0:
+        return ["mixed: expected systems solved by GMRES and by MUMPS: %s"
+                % (counts,)]
+    rows = list(csv.DictReader(open(work / "mixed" / "statistics.csv")))
+    sizes = [int(r["factorized_unknowns"]) for r in rows]
+    size = max(sizes)
+    if any(n not in (0, size) for n in sizes) or not any(
+            sizes[i] == 0 and size in sizes[:i] for i in range(len(sizes))):
+        return ["mixed: factorized_unknowns %s, expected 0 after a GMRES "
+                "solve and %d after a factorisation, a 0 after a %d"
+                % (sizes, size, size)]
+    return []
+
+
 def main():
     args, source, work = script_test.start(__doc__)
     failures = []
@@ -111,6 +140,8 @@ def main():
         work / "direct", work / "amg", "the MUMPS run", TOLERANCE,
         ("symbolic_analyses", "factorized_unknowns"))
     failures += nothing_factorised(work / "amg")
+
+    failures += mixed_solves(args.deepdraw, source, work)
 
     log = run([args.deepdraw, fallback, "--output-directory", "fallback"],
               work, tail=300)
