@@ -224,9 +224,9 @@ namespace deepdraw
         // is the displacement block, bordered by the tool positions.
         BorderedFactorization &condensed = *condensed_implementation;
         Vector<double>         condensed_solution;
-        const unsigned int     gmres_solves = solve_statistics.amg_solves;
+        bool                   by_gmres = false;
         if (parameters.iterative())
-          solve_condensed_iteratively(condensed_solution);
+          by_gmres = solve_condensed_iteratively(condensed_solution);
         else
           solve_with(condensed,
                      parameters.type,
@@ -237,11 +237,8 @@ namespace deepdraw
                      {});
         condensation->expand(matrix, rhs, condensed_solution, solution);
         ++solve_statistics.condensed_solves;
-        // Nothing factorised when GMRES solved the system.
         solve_statistics.factorized_unknowns
-          = solve_statistics.amg_solves > gmres_solves
-              ? 0
-              : condensed.statistics.factorized_unknowns;
+          = by_gmres ? 0 : condensed.statistics.factorized_unknowns;
         return;
       }
       solve_with(*implementation,
@@ -273,7 +270,7 @@ namespace deepdraw
     }
 
 
-    void
+    bool
     LinearSolver::solve_condensed_iteratively(
       Vector<double> &condensed_solution)
     {
@@ -294,7 +291,7 @@ namespace deepdraw
       if (solved)
       {
         ++solve_statistics.amg_solves;
-        return;
+        return true;
       }
       ++solve_statistics.amg_fallbacks;
       solve_with(*condensed_implementation,
@@ -304,6 +301,7 @@ namespace deepdraw
                  condensed_solution,
                  condensation->condensed_tool_positions(),
                  {});
+      return false;
     }
 
 

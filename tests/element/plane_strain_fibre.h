@@ -76,9 +76,8 @@ namespace bending_reference
         table[k]           = state.stress[0][0];
         coupling_table[k]  = tangent[0][0][2][2] / tangent[2][2][2][2];
         thickness_table[k] = thickness_table[k - 1] + increment[2][2];
-        if (k == 1)
-          coupling_table[0] = coupling_table[1];
       }
+      coupling_table[0] = coupling_table[1];
     }
 
     // sigma_xx at the logarithmic strain eps (|eps| <= eps_max), odd in

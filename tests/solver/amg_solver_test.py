@@ -34,7 +34,6 @@ tolerance is 1e-6, and the two exact solvers differ by round-off).
 
     amg_solver_test.py --deepdraw EXE --source-dir REPO --work-dir DIR
 """
-import csv
 import pathlib
 import re
 import sys
@@ -67,7 +66,7 @@ def amg_counts(log):
 
 
 def contact_states(directory):
-    rows = list(csv.DictReader(open(directory / "statistics.csv")))
+    rows = script_test.csv_rows(directory / "statistics.csv")
     return (max(int(r["stick_pairs"]) for r in rows),
             max(int(r["slip_pairs"]) for r in rows))
 
@@ -75,9 +74,9 @@ def contact_states(directory):
 def nothing_factorised(directory):
     """With every system solved by GMRES, statistics.csv's
     factorized_unknowns is 0 in every increment (no factorisation)."""
-    rows = list(csv.DictReader(open(directory / "statistics.csv")))
+    rows = script_test.csv_rows(directory / "statistics.csv")
     factorised = [r["factorized_unknowns"] for r in rows
-                  if float(r["factorized_unknowns"]) != 0.]
+                  if r["factorized_unknowns"] != 0.]
     if factorised:
         return ["%s: factorized_unknowns %s with no fallback, expected 0"
                 % (directory.name, factorised[:3])]
@@ -99,7 +98,7 @@ def mixed_solves(deepdraw, source, work):
     if counts is None or counts[1] == 0 or counts[3] == 0:
         return ["mixed: expected systems solved by GMRES and by MUMPS: %s"
                 % (counts,)]
-    rows = list(csv.DictReader(open(work / "mixed" / "statistics.csv")))
+    rows = script_test.csv_rows(work / "mixed" / "statistics.csv")
     sizes = [int(r["factorized_unknowns"]) for r in rows]
     size = max(sizes)
     if any(n not in (0, size) for n in sizes) or not any(

@@ -161,8 +161,9 @@ namespace deepdraw
                               Vector<double>             &solution);
       void
       update_forcing_term(double residual_norm);
-      // The condensed system by AMG, or by MUMPS where GMRES fails.
-      void
+      // The condensed system by AMG, or by MUMPS where GMRES fails; true
+      // when GMRES solved it (nothing factorised).
+      bool
       solve_condensed_iteratively(Vector<double> &condensed_solution);
       // The direct solver of the systems AMG does not take.
       std::string
