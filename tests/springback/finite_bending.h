@@ -21,6 +21,15 @@
 // Released: an elastic curved bar of the loaded section unloaded by -M
 // (Winkler: the strain increment k (r - r_n) / r, r_n = t' / ln(r_o / r_i)
 // for zero axial force), plane strain modulus E' = E / (1 - nu^2).
+// A section may carry an axial force N (a test's held ends react along
+// their axis, D196): the zero-strain fibre then follows from int sigma dr =
+// N / b, M is taken about the section's centroid, and the release also
+// takes off a uniform -N / (b t'). (The radial stress then ends at N / (b
+// r_o) on the outer face, not 0: 2e-3 MPa for the test's 0.08 N, left out.)
+// With a through-thickness rule (heights Z and weights), the axial force
+// and the moment are that rule's sums instead of the integrals: the closed
+// form of a section integrated as an element integrates it, which leaves
+// the element's own errors apart from its rule's (D196).
 #ifndef deepdraw_tests_springback_finite_bending_h
 #define deepdraw_tests_springback_finite_bending_h
 
@@ -38,10 +47,14 @@ namespace bending_reference
                   const double            kappa,
                   const double            thickness,
                   const double            width,
-                  const double            plane_strain_modulus)
+                  const double            plane_strain_modulus,
+                  const double            section_force              = 0.,
+                  const std::vector<std::pair<double, double>> &rule = {})
         : fibre(fibre)
         , thickness(thickness)
         , r_m(1. / kappa)
+        , axial_force_target(section_force / width)
+        , rule(rule)
     {
       radial.assign(n_radial + 1, 0.);
       radii.assign(n_radial + 1, r_m);
@@ -53,7 +66,7 @@ namespace bending_reference
         {
           rho = 0.5 * (low + high);
           map_fibres();
-          (axial_force() > 0. ? low : high) = rho;
+          (axial_force() > axial_force_target ? low : high) = rho;
         }
         // d(r sigma_r)/dr = sigma_theta, sigma_r(r_i) = 0: r sigma_r =
         // int sigma_theta lambda_z dZ from the inner face.
@@ -69,20 +82,21 @@ namespace bending_reference
         }
         radial = next;
       }
-      // M = int sigma r dr about the centre; with no axial force about any
-      // point.
-      moment
-        = width
-          * through_thickness(thickness,
-                              [this](double Z)
-                              { return stress(Z) * radius(Z) * stretch_z(Z); });
       r_inner          = radius(-thickness / 2.);
       r_outer          = radius(thickness / 2.);
       const double t   = r_outer - r_inner;
       r_neutral        = t / std::log(r_outer / r_inner);
       const double r_c = 0.5 * (r_inner + r_outer);
-      // int E' k (r - r_n) / r  r dr = -M / b.
+      // M = int sigma (r - r_c) dr about the section's centroid (about any
+      // point when the axial force is zero).
+      moment
+        = width
+          * integrate([this, r_c](double Z)
+                      { return stress(Z) * (radius(Z) - r_c) * stretch_z(Z); });
+      // Winkler: int E' k (r - r_n) / r (r - r_c) dr = -M / b; the axial
+      // force falls off as a uniform -N / (b t).
       unloading_per_radius = -moment / (width * t * (r_c - r_neutral));
+      unloading_axial      = -axial_force_target / t;
       // The mid fibre's curvature after release: its rotation per reference
       // length grows by k, its stretch by k (r_m - r_n) / r_m.
       const double k = unloading_per_radius / plane_strain_modulus;
@@ -104,6 +118,13 @@ namespace bending_reference
       return fibre.stress(eps) + fibre.coupling(eps) * radial_stress(Z);
     }
 
+    // lambda_z of the fibre Z.
+    double
+    stretch_z(const double Z) const
+    {
+      return stretch_at(radius(Z));
+    }
+
     double
     radial_stress(const double Z) const
     {
@@ -115,20 +136,32 @@ namespace bending_reference
     residual_stress(const double Z) const
     {
       const double r = radius(Z);
-      return stress(Z) + unloading_per_radius * (r - r_neutral) / r;
+      return stress(Z) + unloading_axial
+             + unloading_per_radius * (r - r_neutral) / r;
     }
 
     double moment;     // N mm
     double springback; // kappa loaded - kappa released, 1 / mm
 
   private:
+    // int f dZ over the thickness, or the rule's sum.
+    template <typename Function>
+    double
+    integrate(const Function &f) const
+    {
+      if (rule.empty())
+        return through_thickness(thickness, f);
+      double sum = 0.;
+      for (const auto &[Z, weight] : rule)
+        sum += weight * f(Z);
+      return sum;
+    }
+
     // int sigma dr = int sigma lambda_z dZ.
     double
     axial_force() const
     {
-      return through_thickness(thickness,
-                               [this](double Z)
-                               { return stress(Z) * stretch_z(Z); });
+      return integrate([this](double Z) { return stress(Z) * stretch_z(Z); });
     }
 
     // lambda_z of the fibre at the radius r: the plane-strain fibre's
@@ -138,12 +171,6 @@ namespace bending_reference
     stretch_at(const double r) const
     {
       return std::exp(fibre.thickness_strain(std::log(r / rho)));
-    }
-
-    double
-    stretch_z(const double Z) const
-    {
-      return stretch_at(radius(Z));
     }
 
     // The radii of the grid's fibres for the current rho: dr/dZ = lambda_z
@@ -186,11 +213,13 @@ namespace bending_reference
     }
 
     const PlaneStrainFibre       &fibre;
-    double                        thickness, r_m, rho = 0.;
+    double                        thickness, r_m, axial_force_target, rho = 0.;
     double                        r_inner = 0., r_outer = 0., r_neutral = 0.;
     double                        unloading_per_radius = 0.; // E' k, MPa
+    double                        unloading_axial      = 0.; // MPa
     static constexpr unsigned int n_radial             = 4000;
     std::vector<double>           radial, radii;
+    std::vector<std::pair<double, double>> rule;
   };
 } // namespace bending_reference
 
