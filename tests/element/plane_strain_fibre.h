@@ -11,6 +11,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deepdraw/material/elasto_plasticity.h>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace bending_reference
@@ -34,6 +35,22 @@ namespace bending_reference
       sum += w * f(z);
     }
     return sum;
+  }
+
+  // The element's rule through the thickness t (heights from the
+  // mid-plane, weights of a unit width): 2 Gauss points a layer, at
+  // 1/2 -+ 1/(2 sqrt 3) of it, each carrying t / (2 layers).
+  inline std::vector<std::pair<double, double>>
+  layer_gauss_rule(const double thickness, const unsigned int layers)
+  {
+    std::vector<std::pair<double, double>> rule;
+    const double                           layer = thickness / layers;
+    for (unsigned int l = 0; l < layers; ++l)
+      for (const double side : {-1., 1.})
+        rule.emplace_back(-thickness / 2. + layer * (l + 0.5)
+                            + side * layer / (2. * std::sqrt(3.)),
+                          layer / 2.);
+    return rule;
   }
 
   class PlaneStrainFibre
@@ -123,6 +140,19 @@ namespace bending_reference
                [&](const double z)
                { return stress(std::log(1. + kappa * z)) * z; },
                n_fibres);
+    }
+
+    // The same moment summed with a through-thickness rule (heights and
+    // weights of a unit width, layer_gauss_rule).
+    double
+    moment(const double                                  kappa,
+           const double                                  width,
+           const std::vector<std::pair<double, double>> &rule) const
+    {
+      double sum = 0.;
+      for (const auto &[z, weight] : rule)
+        sum += weight * stress(std::log(1. + kappa * z)) * z;
+      return width * sum;
     }
 
     deepdraw::material::MaterialParameters parameters;

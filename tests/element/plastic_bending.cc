@@ -146,31 +146,9 @@ namespace
   }
 
 
-  // b int sigma_xx(ln(1 + kappa z)) z dz over the thickness; with layers >
-  // 0 the element's rule instead of the integral: 2 Gauss points a layer,
-  // each carrying t / (2 layers).
-  double
-  reference_moment(const double       kappa,
-                   const std::string &material,
-                   const unsigned int layers = 0)
-  {
-    const double eps_max = std::log(1. + kappa * thickness / 2.) * 1.001;
-    const bending_reference::PlaneStrainFibre fibre(material, eps_max);
-    if (layers == 0)
-      return fibre.moment(kappa, thickness, width);
-    const double layer = thickness / layers;
-    double       sum   = 0.;
-    for (unsigned int l = 0; l < layers; ++l)
-      for (const double side : {-1., 1.})
-      {
-        const double z = -thickness / 2. + layer * (l + 0.5)
-                         + side * layer / (2. * std::sqrt(3.));
-        sum += width * layer / 2. * fibre.stress(std::log(1. + kappa * z)) * z;
-      }
-    return sum;
-  }
-
-  // M / M_reference - 1 of a bent strip against both references.
+  // M / M_reference - 1 of a bent strip against both references (module
+  // comment): b int sigma_xx(ln(1 + kappa z)) z dz over the thickness, and
+  // the same fibres summed with the element's rule.
   struct MomentErrors
   {
     double integral, rule;
@@ -181,8 +159,15 @@ namespace
                 const std::string   &material,
                 const unsigned int   layers)
   {
-    return {result.moment / reference_moment(result.curvature, material) - 1.,
-            result.moment / reference_moment(result.curvature, material, layers)
+    const double kappa   = result.curvature;
+    const double eps_max = std::log(1. + kappa * thickness / 2.) * 1.001;
+    const bending_reference::PlaneStrainFibre fibre(material, eps_max);
+    return {result.moment / fibre.moment(kappa, thickness, width) - 1.,
+            result.moment
+                / fibre.moment(kappa,
+                               width,
+                               bending_reference::layer_gauss_rule(thickness,
+                                                                   layers))
               - 1.};
   }
 

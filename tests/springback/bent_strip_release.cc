@@ -334,21 +334,6 @@ namespace
     return error / largest;
   }
 
-  // The element's through-thickness rule: 2 Gauss points a layer, each
-  // carrying t / (2 layers) of a unit width.
-  std::vector<std::pair<double, double>>
-  element_rule(const unsigned int layers)
-  {
-    std::vector<std::pair<double, double>> rule;
-    const double                           layer = thickness / layers;
-    for (unsigned int l = 0; l < layers; ++l)
-      for (const double side : {-1., 1.})
-        rule.emplace_back(-thickness / 2. + layer * (l + 0.5)
-                            + side * layer / (2. * std::sqrt(3.)),
-                          layer / 2.);
-    return rule;
-  }
-
   // (b) Elastoplastic: bent, released, and checked against the closed form,
   // integrated exactly and with the element's rule.
   void
@@ -386,13 +371,14 @@ namespace
                                                  width,
                                                  E_plane,
                                                  before.axial_force);
-    const bending_reference::FiniteBending with_the_rule(fibre,
-                                                         kappa,
-                                                         thickness,
-                                                         width,
-                                                         E_plane,
-                                                         before.axial_force,
-                                                         element_rule(layers));
+    const bending_reference::FiniteBending with_the_rule(
+      fibre,
+      kappa,
+      thickness,
+      width,
+      E_plane,
+      before.axial_force,
+      bending_reference::layer_gauss_rule(thickness, layers));
     const std::string name = "plastic, " + std::to_string(layers) + " layers: ";
     check_errors(compare(before, after, exact, name + "closed form"),
                  tolerance.closed_form,
