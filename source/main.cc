@@ -1,5 +1,6 @@
 // deepdraw: implicit simulation of sheet-metal deep drawing. main() starts
-// MPI (one rank, app/single_process_mpi.h) and the signal set-up and hands
+// MPI (one rank without mpirun, app/single_process_mpi.h; N ranks under
+// mpirun, parallel/run_agreement.h) and the signal set-up and hands
 // the command line to app::run_command_line (app/command_line.h, exit codes
 // in doc/user_guide.md §1 and §5).
 #include <csignal>
@@ -7,6 +8,9 @@
 #include <deal.II/base/mpi.h>
 #include <deepdraw/app/command_line.h>
 #include <deepdraw/app/single_process_mpi.h>
+#include <deepdraw/io/writing_rank.h>
+#include <deepdraw/parallel/ranks.h>
+#include <deepdraw/parallel/run_agreement.h>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -21,29 +25,22 @@ main(int argc, char *argv[])
     return 2;
   }
   const deepdraw::app::SingleProcessMpi single_process_mpi;
-  // As many threads as cores (or DEAL_II_NUM_THREADS): the element
+  // As many threads as cores, shared among the ranks on one machine (or
+  // DEAL_II_NUM_THREADS): the element
   // assembly runs in a WorkStream loop whose copier adds the cells in a
   // fixed order, so the results do not depend on the thread count (D61).
   dealii::Utilities::MPI::MPI_InitFinalize
     mpi(argc, argv, dealii::numbers::invalid_unsigned_int);
-  // One rank until parallel runs are built (issue 29, D195): under mpirun
-  // -np N every rank would run the whole simulation into one output folder.
-  if (const unsigned int ranks
-      = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-      ranks > 1)
-  {
-    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-      std::cerr << "deepdraw: error in the input: started on " << ranks
-                << " MPI ranks; deepdraw runs on one rank (start it without "
-                   "mpirun, or with mpirun -np 1)"
-                << std::endl;
-    return 2;
-  }
+  // Under mpirun every rank runs the model; rank 0 alone prints and writes
+  // (D199).
+  deepdraw::parallel::start_ranks();
+  deepdraw::io::set_writes_files(deepdraw::parallel::is_root());
   dealii::deal_II_exceptions::disable_abort_on_exception();
   // With a file size limit (ulimit -f) a write beyond it raises SIGXFSZ,
   // which kills the process; ignored, the write fails with EFBIG and is
   // reported like a full disk (exit code 3, D51).
   std::signal(SIGXFSZ, SIG_IGN);
-  return deepdraw::app::run_command_line(
+  const int code = deepdraw::app::run_command_line(
     std::vector<std::string>(argv + 1, argv + argc));
+  return deepdraw::parallel::end_run(code);
 }

@@ -15,6 +15,8 @@
 #include <deepdraw/io/parameter_file.h>
 #include <deepdraw/io/printable_text.h>
 #include <deepdraw/io/regular_file.h>
+#include <deepdraw/parallel/ranks.h>
+#include <deepdraw/parallel/run_agreement.h>
 #include <deepdraw/problem/forming_problem.h>
 #include <deepdraw/state/stop_request.h>
 #include <iostream>
@@ -83,12 +85,77 @@ namespace deepdraw
                   << std::endl;
         return 3;
       }
+
+      bool
+      has(const std::vector<std::string> &arguments, const char *flag)
+      {
+        return std::find(arguments.begin(), arguments.end(), flag)
+               != arguments.end();
+      }
+
+      // The run: a failure after the output has started is exit code 3;
+      // SIGINT, SIGTERM, SIGHUP and SIGQUIT stop it cleanly with a
+      // checkpoint (D55, D163).
+      int
+      run_model(problem::FormingProblem   &forming_problem,
+                const problem::RunOptions &options)
+      {
+        try
+        {
+          forming_problem.run(options);
+        }
+        catch (const parallel::RankFailure &failure)
+        {
+          return failure.code;
+        }
+        catch (const InputError &error)
+        {
+          return input_error(error.what());
+        }
+        catch (const io::OutputError &error)
+        {
+          return run_stopped(error.what());
+        }
+        catch (const problem::RunFailure &failure)
+        {
+          return run_stopped(failure.what());
+        }
+        catch (const dealii::ExceptionBase &error)
+        {
+          return run_stopped(io::deal_ii_message(error));
+        }
+        catch (const std::bad_alloc &)
+        {
+          return run_stopped("out of memory; what was written up to the last "
+                             "converged increment stays valid");
+        }
+        catch (const std::exception &error)
+        {
+          return run_stopped(error.what());
+        }
+        return 0;
+      }
     } // namespace
 
 
     int
     run_command_line(const std::vector<std::string> &arguments)
     {
+      // Under mpirun the ranks share a run; the other commands are rank
+      // 0's alone (D199).
+      if (parallel::n_ranks() > 1)
+      {
+        if (has(arguments, "--study"))
+          return input_error(
+            "--study runs on one MPI rank: start it without mpirun (its runs "
+            "are not launched under mpirun yet)");
+        if ((!arguments.empty() && arguments[0] == "--write-square-cup-tools")
+            || has(arguments, "--flc") || has(arguments, "--check")
+            || has(arguments, "--print-parameters") || has(arguments, "--help")
+            || has(arguments, "-h"))
+          if (!parallel::is_root())
+            return 0;
+      }
       if (!arguments.empty() && arguments[0] == "--write-square-cup-tools")
         return write_square_cup_tools(arguments);
       if (std::find(arguments.begin(), arguments.end(), "--flc")
@@ -208,40 +275,14 @@ namespace deepdraw
         return 0;
       }
 
-      // The run: a failure after the output has started is exit code 3;
-      // SIGINT, SIGTERM, SIGHUP and SIGQUIT stop it cleanly with a
-      // checkpoint (D55, D163).
       state::install_stop_handlers();
-      try
-      {
-        forming_problem->run(options);
-      }
-      catch (const InputError &error)
-      {
-        return input_error(error.what());
-      }
-      catch (const io::OutputError &error)
-      {
-        return run_stopped(error.what());
-      }
-      catch (const problem::RunFailure &failure)
-      {
-        return run_stopped(failure.what());
-      }
-      catch (const dealii::ExceptionBase &error)
-      {
-        return run_stopped(io::deal_ii_message(error));
-      }
-      catch (const std::bad_alloc &)
-      {
-        return run_stopped("out of memory; what was written up to the last "
-                           "converged increment stays valid");
-      }
-      catch (const std::exception &error)
-      {
-        return run_stopped(error.what());
-      }
-      return 0;
+      const int code = run_model(*forming_problem, options);
+      // Under mpirun a rank that stops may do so alone (rank 0's disk is
+      // full): the model's MUMPS instances are released collectively, so
+      // they are left to the end of the process (D199).
+      if (code != 0 && parallel::n_ranks() > 1)
+        (void)forming_problem.release();
+      return code;
     }
   } // namespace app
 } // namespace deepdraw

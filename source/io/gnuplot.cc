@@ -4,6 +4,7 @@
 #include <deepdraw/io/child_process.h>
 #include <deepdraw/io/gnuplot.h>
 #include <deepdraw/io/output_file.h>
+#include <deepdraw/io/writing_rank.h>
 
 namespace deepdraw
 {
@@ -24,6 +25,8 @@ namespace deepdraw
                       const std::string &name,
                       const std::string &script)
     {
+      if (!writes_files())
+        return "";
       write_file_atomically(directory + "/" + name + ".gp", script);
       const std::string log   = directory + "/" + name + "_gnuplot.log";
       int               error = 0;

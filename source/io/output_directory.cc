@@ -3,6 +3,7 @@
 #include <cstring>
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/io/output_directory.h>
+#include <deepdraw/io/writing_rank.h>
 #include <exception>
 #include <filesystem>
 #include <unistd.h>
@@ -20,12 +21,13 @@ namespace deepdraw
       const bool existed = !made_for_run && std::filesystem::exists(directory);
       try
       {
-        std::filesystem::create_directories(directory);
+        if (writes_files())
+          std::filesystem::create_directories(directory);
         open();
       }
       catch (const std::exception &error)
       {
-        if (!existed)
+        if (!existed && writes_files())
         {
           std::error_code ignored;
           std::filesystem::remove_all(directory, ignored);

@@ -7,6 +7,7 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deepdraw/linear_algebra/newton_linear_system.h>
+#include <deepdraw/parallel/ranks.h>
 #include <limits>
 
 namespace deepdraw
@@ -102,6 +103,14 @@ namespace deepdraw
                                                  dofs,
                                                  system_matrix,
                                                  rhs);
+        }
+
+        void
+        sum_over_ranks() override
+        {
+          if (system_matrix.n_nonzero_elements() > 0)
+            parallel::sum(const_cast<double *>(&system_matrix(0, 0)),
+                          system_matrix.n_nonzero_elements());
         }
 
         void

@@ -2,6 +2,7 @@
 #include <atomic>
 #include <deal.II/base/work_stream.h>
 #include <deepdraw/fe/selective_reduced_quadrature.h>
+#include <deepdraw/parallel/ranks.h>
 #include <deepdraw/problem/element_assembly.h>
 
 namespace deepdraw
@@ -48,16 +49,22 @@ namespace deepdraw
       std::atomic<int>          worst_status{0};
       std::atomic<unsigned int> plastic_points{0};
       std::atomic<unsigned int> pending_elements{0};
+      // Under mpirun each rank evaluates its share of the cells; the sums
+      // over the ranks follow the loop (D199).
+      const auto owned = parallel::owned_cells(
+        sheet.dof_handler().get_triangulation().n_active_cells());
 
       auto worker
         = [&](const typename DoFHandler<3>::active_cell_iterator &cell,
               AssemblyScratch                                    &scratch,
               AssemblyCopy                                       &copy)
       {
-        copy.active = false;
-        cell->get_dof_indices(copy.dofs);
+        copy.active              = false;
         const unsigned int index = cell->active_cell_index();
-        copy.cell_index          = index;
+        if (index < owned.first || index >= owned.second)
+          return;
+        cell->get_dof_indices(copy.dofs);
+        copy.cell_index = index;
         double cell_du[fe::dofs_per_cell];
         for (unsigned int i = 0; i < fe::dofs_per_cell; ++i)
           cell_du[i] = du[copy.dofs[i]];
@@ -126,13 +133,26 @@ namespace deepdraw
                       copier,
                       AssemblyScratch(),
                       AssemblyCopy());
+      int                status  = worst_status.load();
+      unsigned long long plastic = plastic_points.load(),
+                         pending = pending_elements.load();
+      if (parallel::n_ranks() > 1)
+      {
+        parallel::sum(rhs.begin(), rhs.size());
+        parallel::sum(internal_force.begin(), internal_force.size());
+        if (matrix != nullptr)
+          matrix->sum_over_ranks();
+        status  = parallel::maximum(status);
+        plastic = parallel::sum(plastic);
+        pending = parallel::sum(pending);
+      }
       // The nodal forces of hanging vertices belong to their masters: the
       // reactions of a face are those of the condensed system.
       if (hanging.n_constraints() > 0)
         hanging.condense(internal_force);
-      return {static_cast<fe::ElementStatus>(worst_status.load()),
-              plastic_points.load(),
-              pending_elements.load()};
+      return {static_cast<fe::ElementStatus>(status),
+              static_cast<unsigned int>(plastic),
+              static_cast<unsigned int>(pending)};
     }
   } // namespace problem
 } // namespace deepdraw

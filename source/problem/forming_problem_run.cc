@@ -8,6 +8,9 @@
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/io/output_directory.h>
 #include <deepdraw/io/regular_file.h>
+#include <deepdraw/io/writing_rank.h>
+#include <deepdraw/parallel/ranks.h>
+#include <deepdraw/parallel/run_agreement.h>
 #include <deepdraw/problem/console_report.h>
 #include <deepdraw/problem/forming_problem.h>
 #include <deepdraw/solver/mumps_factorization.h>
@@ -42,7 +45,9 @@ namespace deepdraw
       // restore_checkpoint, and not made.
       const std::string &directory = parameters.output.output_directory;
       std::error_code    error;
-      if (options.resume && !std::filesystem::is_directory(directory, error))
+      if (!io::writes_files()
+          || (options.resume
+              && !std::filesystem::is_directory(directory, error)))
         return;
       // A named pipe in place of a table blocks the run that opens it
       // (D164): refused before the lock file is written.
@@ -74,6 +79,10 @@ namespace deepdraw
     {
       // Before anything in the output directory is written or cut back.
       lock_output_directory(options);
+      // Rank 0 alone made and locked the output directory, cuts back its
+      // tables and opens them: the ranks go on together or not at all
+      // (D199).
+      parallel::agree_on_start();
       try
       {
         if (options.resume)
@@ -98,7 +107,10 @@ namespace deepdraw
         }
         throw;
       }
+      parallel::agree_on_start();
       open_outputs(options.resume);
+      parallel::agree_on_start();
+      parallel::start_agreed();
       if (!options.resume)
         postprocessors.execute(*view);
       table_sizes = state::csv_table_sizes(parameters.output.output_directory);
@@ -184,7 +196,10 @@ namespace deepdraw
       start_next_increment();
       while (!control.finished())
       {
-        if (const int signal_number = state::requested_stop_signal())
+        // mpirun passes a signal on to every rank, each at its own time:
+        // they stop at the same increment (D199).
+        if (const int signal_number
+            = parallel::maximum(state::requested_stop_signal()))
           stop_cleanly("stopped by " + state::signal_name(signal_number));
 
         const double     old_load   = control.current_load();

@@ -5,6 +5,7 @@
 #include <deepdraw/blank/nodal_surface_area.h>
 #include <deepdraw/fe/selective_reduced_quadrature.h>
 #include <deepdraw/io/input_error.h>
+#include <deepdraw/parallel/ranks.h>
 #include <deepdraw/problem/sheet_model.h>
 
 namespace deepdraw
@@ -237,6 +238,7 @@ namespace deepdraw
                        const double    start_load,
                        const double    end_load)
     {
+      gather_trial_state();
       committed.history             = trial_history;
       committed.enhanced_parameters = trial_enhanced_parameters;
       discretisation.hanging_node_constraints().distribute(unknowns);
@@ -259,6 +261,7 @@ namespace deepdraw
       // The Newton solution keeps the last increment's du (the
       // extrapolation predictor scales it) with the re-equilibrated
       // multipliers and tool positions.
+      gather_trial_state();
       committed.history = trial_history;
       for (types::global_dof_index i = discretisation.n_displacement_dofs();
            i < unknowns.size();
@@ -287,6 +290,16 @@ namespace deepdraw
       committed.vertices = discretisation.triangulation().get_vertices();
       thickness_measurement.update(discretisation.triangulation(),
                                    parameters.geometry.thickness);
+    }
+
+
+    void
+    SheetModel::gather_trial_state()
+    {
+      const unsigned int n_cells
+        = discretisation.triangulation().n_active_cells();
+      parallel::gather_owned_cells(trial_history, n_cells);
+      parallel::gather_owned_cells(trial_enhanced_parameters, n_cells);
     }
 
 

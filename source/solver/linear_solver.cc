@@ -3,6 +3,7 @@
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
 #include <deepdraw/io/input_error.h>
+#include <deepdraw/parallel/ranks.h>
 #include <deepdraw/solver/bordered_amg_solver.h>
 #include <deepdraw/solver/bordered_factorization.h>
 #include <deepdraw/solver/linear_solver.h>
@@ -129,6 +130,13 @@ namespace deepdraw
         throw InputError("Linear solver/Type = AMG cannot be combined with "
                          "Linear solver/Reuse factorisation = true: allowed "
                          "with AMG is false");
+      // KLU and the AMG hierarchy are built on Trilinos' serial maps
+      // (D199).
+      if (parallel::n_ranks() > 1 && type != "MUMPS" && type != "UMFPACK")
+        throw InputError("Linear solver/Type = " + type
+                         + " runs on one MPI "
+                           "rank; allowed under mpirun are MUMPS (factorised "
+                           "across the ranks) and UMFPACK");
       prm.leave_subsection();
     }
 

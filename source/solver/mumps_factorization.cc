@@ -1,5 +1,7 @@
 #include <algorithm>
+#include <deepdraw/parallel/ranks.h>
 #include <deepdraw/solver/mumps_factorization.h>
+#include <exception>
 #include <mpi.h>
 #include <stdexcept>
 #include <string>
@@ -57,11 +59,15 @@ namespace deepdraw
       MPI_Initialized(&initialized);
       if (!initialized)
         throw std::runtime_error("MUMPS needs MPI to be initialised");
-      data              = DMUMPS_STRUC_C();
-      data.comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(MPI_COMM_SELF));
-      data.par          = 1; // the host works
-      data.sym          = 0; // unsymmetric (contact rows, D90)
-      data.job          = -1;
+      data = DMUMPS_STRUC_C();
+      // Under mpirun every rank holds the whole matrix and MUMPS factorises
+      // across all of them (D199).
+      distributed       = parallel::n_ranks() > 1;
+      data.comm_fortran = static_cast<MUMPS_INT>(
+        MPI_Comm_c2f(distributed ? MPI_COMM_WORLD : MPI_COMM_SELF));
+      data.par = 1; // the host works
+      data.sym = 0; // unsymmetric (contact rows, D90)
+      data.job = -1;
       dmumps_c(&data);
       // Silent: no messages, statistics or warnings on the terminal.
       data.icntl[index(1)] = -1;
@@ -81,11 +87,21 @@ namespace deepdraw
       // scaling is otherwise recomputed in every factorisation (D98).
       if (!scale)
         data.icntl[index(8)] = 0;
+      // Each rank gives its share of the rows (distributed assembled
+      // input): the host does not send the whole matrix out in every
+      // factorisation. The right-hand sides and solutions stay on the host.
+      if (distributed)
+        data.icntl[index(18)] = 3;
     }
 
 
     MumpsFactorization::~MumpsFactorization()
     {
+      // Releasing a distributed instance is collective: a rank leaving on
+      // an exception (another rank may be elsewhere) leaves it to the end
+      // of the process.
+      if (distributed && std::uncaught_exceptions() > 0)
+        return;
       data.job = -2;
       dmumps_c(&data);
     }
@@ -136,8 +152,13 @@ namespace deepdraw
       // set_up_pattern: MUMPS reads them in place, during job 2 only. The
       // first stored entry is (0, 0): a square pattern stores the diagonal
       // first (checked in set_up_pattern).
-      data.a
-        = row_index.empty() ? nullptr : const_cast<double *>(&matrix(0, 0));
+      double *values = pattern.n_nonzero_elements() == 0
+                         ? nullptr
+                         : const_cast<double *>(&matrix(0, 0));
+      if (distributed)
+        data.a_loc = row_index.empty() ? nullptr : values + first_local_entry;
+      else
+        data.a = row_index.empty() ? nullptr : values;
       if (!analysed)
         analyse();
       run(2);
@@ -205,7 +226,7 @@ namespace deepdraw
     void
     MumpsFactorization::solve(std::vector<Vector<double>> &rhs_and_solutions)
     {
-      const std::size_t n = row_index.empty() ? 0 : data.n;
+      const std::size_t n = analysed ? static_cast<std::size_t>(data.n) : 0;
       for (const Vector<double> &column : rhs_and_solutions)
         if (!analysed || column.size() != n)
           throw std::runtime_error(
@@ -220,6 +241,10 @@ namespace deepdraw
       data.nrhs = rhs_and_solutions.size();
       data.lrhs = n;
       run(3);
+      // The solution is on the host.
+      if (distributed)
+        parallel::broadcast(right_hand_sides.data(),
+                            right_hand_sides.size() * sizeof(double));
       for (std::size_t c = 0; c < rhs_and_solutions.size(); ++c)
         std::copy(right_hand_sides.begin() + c * n,
                   right_hand_sides.begin() + (c + 1) * n,
@@ -278,21 +303,47 @@ namespace deepdraw
                         || pattern.begin(0)->column() == 0),
                   ExcMessage("MUMPS: a compressed square pattern is needed"));
       analysed_pattern.take(pattern);
-      row_index.resize(pattern.n_nonzero_elements());
-      column_index.resize(pattern.n_nonzero_elements());
-      std::size_t k = 0;
-      for (types::global_dof_index i = 0; i < pattern.n_rows(); ++i)
+      // This rank's rows: all of them, or its contiguous share.
+      const unsigned long long n_rows = pattern.n_rows(),
+                               ranks  = parallel::n_ranks(),
+                               rank   = parallel::this_rank();
+      const types::global_dof_index first_row
+        = distributed ? n_rows * rank / ranks : 0;
+      const types::global_dof_index end_row
+        = distributed ? n_rows * (rank + 1) / ranks : n_rows;
+      // A square compressed pattern has no empty row (the diagonal first).
+      const auto first_entry = [&](const types::global_dof_index row)
+      {
+        return row < n_rows ? std::size_t(pattern.begin(row)->global_index())
+                            : std::size_t(pattern.n_nonzero_elements());
+      };
+      first_local_entry = first_entry(first_row);
+      row_index.clear();
+      column_index.clear();
+      row_index.reserve(first_entry(end_row) - first_local_entry);
+      column_index.reserve(row_index.capacity());
+      std::size_t k = first_local_entry;
+      for (types::global_dof_index i = first_row; i < end_row; ++i)
         for (auto entry = pattern.begin(i); entry != pattern.end(i);
              ++entry, ++k)
         {
           AssertThrow(entry->global_index() == k, ExcInternalError());
-          row_index[k]    = i + 1;
-          column_index[k] = entry->column() + 1;
+          row_index.push_back(i + 1);
+          column_index.push_back(entry->column() + 1);
         }
-      data.n   = pattern.n_rows();
-      data.nnz = row_index.size();
-      data.irn = row_index.data();
-      data.jcn = column_index.data();
+      data.n = n_rows;
+      if (distributed)
+      {
+        data.nnz_loc = row_index.size();
+        data.irn_loc = row_index.data();
+        data.jcn_loc = column_index.data();
+      }
+      else
+      {
+        data.nnz = row_index.size();
+        data.irn = row_index.data();
+        data.jcn = column_index.data();
+      }
       analysed = false;
     }
   } // namespace solver

@@ -7,6 +7,7 @@
 #include <deepdraw/io/printable_text.h>
 #include <deepdraw/io/pvd_record.h>
 #include <deepdraw/io/regular_file.h>
+#include <deepdraw/io/writing_rank.h>
 #include <deepdraw/state/checkpoint.h>
 #include <filesystem>
 #include <fstream>
@@ -247,6 +248,8 @@ namespace deepdraw
     void
     write_checkpoint(const std::string &filename, const Checkpoint &checkpoint)
     {
+      if (!io::writes_files())
+        return;
       const std::string image     = checkpoint_image(checkpoint);
       const std::string temporary = filename + ".tmp";
       {

@@ -7,6 +7,7 @@
 #include <deepdraw/io/checksum.h>
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/io/printable_text.h>
+#include <deepdraw/io/writing_rank.h>
 #include <deepdraw/state/checkpoint.h>
 #include <filesystem>
 #include <map>
@@ -173,6 +174,8 @@ namespace deepdraw
     csv_table_sizes(const std::string &directory)
     {
       std::vector<std::pair<std::string, std::uintmax_t>> sizes;
+      if (!io::writes_files())
+        return sizes;
       for (const auto &entry : std::filesystem::directory_iterator(directory))
         if (entry.is_regular_file() && entry.path().extension() == ".csv")
           sizes.emplace_back(entry.path().filename().string(),
@@ -214,6 +217,8 @@ namespace deepdraw
       const std::string                                         &directory,
       const std::vector<std::pair<std::string, std::uintmax_t>> &sizes)
     {
+      if (!io::writes_files())
+        return;
       check_tables(directory, sizes);
       for (const auto &[name, size] : sizes)
         std::filesystem::resize_file(directory + "/" + name, size);

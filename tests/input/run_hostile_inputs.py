@@ -17,12 +17,17 @@ failed. A case may be skipped where the machine cannot produce it (a tiny
 file system needs root); the skip is printed.
 
   run_hostile_inputs.py --deepdraw EXE --source-dir REPO --work-dir DIR --class NAME
-                        [--jobs N]
+                        [--jobs N] [--launcher "mpirun --oversubscribe -np 2"]
+
+With --launcher every case runs under it (tests/parallel, D199): the same
+exit codes and the message printed once, not once per rank; mpirun's own
+notices are left out of what is checked.
 """
 import argparse
 import concurrent.futures
 import os
 import pathlib
+import re
 import shutil
 import subprocess
 import sys
@@ -65,8 +70,27 @@ def check_outputs(output):
     return problems
 
 
-def run_case(case, deepdraw, source, work):
-    """Returns (status, detail): status 'ok', 'FAIL' or 'skip'."""
+def without_launcher_text(text):
+    """What deepdraw printed, without mpirun's own notices (blocks between
+    lines of dashes, and lines tagged [host:pid])."""
+    kept, inside = [], False
+    for line in text.splitlines():
+        if len(line) > 20 and set(line.strip()) == {"-"}:
+            inside = not inside
+            continue
+        if not inside and not re.match(r"\[\S+:\d+\] ", line):
+            kept.append(line)
+    return "\n".join(kept) + ("\n" if kept else "")
+
+
+def run_case(case, deepdraw, source, work, launcher=()):
+    """Returns (status, detail): status 'ok', 'FAIL' or 'skip'. Under a
+    launcher (mpirun) the cases that set limits of the process are
+    skipped: the limits would hold for mpirun's own files too."""
+    if launcher and "preexec" in case:
+        return "skip", "sets process limits, not under mpirun"
+    if launcher and "--study" in case.get("args", []):
+        return "skip", "--study runs on one rank (tests/parallel)"
     directory = work / case["name"]
     if directory.exists():
         shutil.rmtree(directory)
@@ -85,10 +109,14 @@ def run_case(case, deepdraw, source, work):
     try:
         arguments = case.get("args", ["case.prm", "--output-directory",
                                       "output"])
-        command = [deepdraw] + [a.format(**context) for a in arguments]
+        command = list(launcher) + [deepdraw] + \
+            [a.format(**context) for a in arguments]
+        environment = dict(os.environ)
+        environment["OMPI_ALLOW_RUN_AS_ROOT"] = "1"
+        environment["OMPI_ALLOW_RUN_AS_ROOT_CONFIRM"] = "1"
         run = subprocess.run(command, cwd=directory, stdout=subprocess.PIPE,
                              stderr=subprocess.PIPE, timeout=300,
-                             preexec_fn=case.get("preexec"))
+                             preexec_fn=case.get("preexec"), env=environment)
     finally:
         if "cleanup" in case:
             case["cleanup"](context)
@@ -96,6 +124,9 @@ def run_case(case, deepdraw, source, work):
     try:
         out = run.stdout.decode("utf-8")
         err = run.stderr.decode("utf-8")
+        if launcher:
+            out = without_launcher_text(out)
+            err = without_launcher_text(err)
     except UnicodeDecodeError:
         return "FAIL", "deepdraw printed bytes that are not UTF-8"
     if not printable(out + err):
@@ -132,6 +163,9 @@ def main():
                         choices=sorted(hostile_cases.CLASSES))
     parser.add_argument("--jobs", type=int, default=4,
                         help="cases run at the same time (default 4)")
+    parser.add_argument("--launcher", default="",
+                        help="a command deepdraw is started under, such as "
+                        "'mpirun --oversubscribe -np 2' (tests/parallel)")
     args = parser.parse_args()
     source = pathlib.Path(args.source_dir).resolve()
     work = pathlib.Path(args.work_dir).resolve()
@@ -143,7 +177,8 @@ def main():
     # start waiting for MPI, not computing (D54).
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
         results = list(pool.map(
-            lambda case: run_case(case, deepdraw, source, work), cases))
+            lambda case: run_case(case, deepdraw, source, work,
+                                  args.launcher.split()), cases))
     failed = skipped = 0
     for case, (status, detail) in zip(cases, results):
         failed += status == "FAIL"

@@ -1,14 +1,9 @@
 #!/usr/bin/env python3
-"""deepdraw runs on one MPI rank until parallel runs are built (issue 29,
-doc/decisions.md D195): `mpirun -np 2 deepdraw FILE.prm` ends with exit
-code 2 and one line, printed once, naming the rank count, and writes
-nothing (without the check both ranks ran the whole simulation into one
-output folder, and the second stopped on the first's lock); `mpirun -np 1`
-is the run without a launcher, every CSV table equal cell for cell (but the
-wall times).
+"""`mpirun -np 1 deepdraw FILE.prm` is the run without a launcher: every CSV
+table equal cell for cell (but the wall times). More ranks: tests/parallel
+(D199).
 
-Expectations are exit codes, the file system and equal tables, so there is
-no tolerance.
+Expectations are exit codes and equal tables, so there is no tolerance.
 
     mpi_ranks_test.py --deepdraw EXE --source-dir REPO --work-dir DIR
 """
@@ -21,8 +16,6 @@ sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
 import script_test  # noqa: E402  (tests/script_test.py)
 
 PRM = pathlib.Path(__file__).with_name("short_cup.prm")
-MESSAGE = ("deepdraw: error in the input: started on 2 MPI ranks; deepdraw "
-           "runs on one rank (start it without mpirun, or with mpirun -np 1)")
 
 
 def mpirun(ranks, deepdraw, output, work):
@@ -44,15 +37,6 @@ def mpirun(ranks, deepdraw, output, work):
 def main():
     args, _, work = script_test.start(__doc__)
     failures = []
-
-    code, output = mpirun(2, args.deepdraw, "two", work)
-    if code != 2:
-        failures.append(f"two ranks: exit code {code}, expected 2")
-    if output.count(MESSAGE) != 1:
-        failures.append(f"two ranks: the message {output.count(MESSAGE)} "
-                        "times, expected once")
-    if (work / "two").exists():
-        failures.append("two ranks: the output folder was created")
 
     script_test.run([args.deepdraw, str(PRM), "--output-directory", "plain"],
                     work, tail=300)

@@ -44,6 +44,12 @@ namespace deepdraw
                 Vector                                     &rhs)
         = 0;
 
+      // Each rank added its own cells (D199): the entries summed over the
+      // ranks, the same on every rank. Nothing to do on one rank.
+      virtual void
+      sum_over_ranks()
+        = 0;
+
       // One entry, which must be in the pattern.
       virtual void
       add(types::global_dof_index row,

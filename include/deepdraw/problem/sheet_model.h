@@ -196,6 +196,10 @@ namespace deepdraw
       // (updated Lagrangian).
       void
       move_mesh(Vector<double> &unknowns);
+      // Under mpirun each rank updated the trial state of its own cells:
+      // every rank gets all of them before they are committed (D199).
+      void
+      gather_trial_state();
       // The Newton solutions of the committed state sized for the current
       // unknowns: their displacement blocks kept, the contact blocks from
       // the pairs before the change (parents: of a refinement, none: of a

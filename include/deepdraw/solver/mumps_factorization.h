@@ -33,8 +33,10 @@ namespace deepdraw
     {
     public:
       // Needs MPI to be initialised (deepdraw's main does): MUMPS runs on
-      // MPI_COMM_SELF. `scale`: MUMPS scales rows and columns in each
-      // factorisation (ICNTL(8) = 77); false for a well-scaled matrix.
+      // MPI_COMM_SELF, or under mpirun on all ranks, every rank calling
+      // every function in the same order. `scale`: MUMPS scales rows and
+      // columns in each factorisation (ICNTL(8) = 77); false for a well-scaled
+      // matrix.
       explicit MumpsFactorization(bool scale = true);
       ~MumpsFactorization();
       MumpsFactorization(const MumpsFactorization &) = delete;
@@ -89,7 +91,11 @@ namespace deepdraw
       void
       run(int job);
 
-      DMUMPS_STRUC_C      data;
+      DMUMPS_STRUC_C data;
+      // Under mpirun (D199): MPI_COMM_WORLD, each rank giving the entries
+      // of its rows, which begin at first_local_entry of the values.
+      bool                distributed       = false;
+      std::size_t         first_local_entry = 0;
       PatternSnapshot     analysed_pattern;
       bool                analysed          = false;
       unsigned int        symbolic_analyses = 0;

@@ -1,0 +1,70 @@
+// The MPI ranks of a run (doc/architecture.md, "Parallel runs", D199).
+// Every rank holds the whole model (mesh, state, Newton vectors) and takes
+// every decision itself; what is split is the work: each rank evaluates
+// the elements of its share of the cells, and MUMPS factorises across all
+// ranks. So that the ranks take the same decisions, every sum over ranks
+// gives the same bits on every rank (reduced on rank 0, then broadcast).
+// With one rank every function here returns at once and changes nothing.
+#ifndef deepdraw_parallel_ranks_h
+#define deepdraw_parallel_ranks_h
+
+#include <cstddef>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace deepdraw
+{
+  namespace parallel
+  {
+    // The size of and this process's rank in MPI_COMM_WORLD (1 and 0 where
+    // MPI is not initialised, as in the unit tests).
+    unsigned int
+    n_ranks();
+    unsigned int
+    this_rank();
+    bool
+    is_root();
+
+    // The active cells [first, second) whose elements this rank
+    // evaluates: contiguous shares of the active-cell numbering, their
+    // sizes differing by at most one.
+    std::pair<unsigned int, unsigned int>
+    owned_cells(unsigned int n_active_cells);
+
+    // values[i] summed over the ranks, the same bits on every rank.
+    void
+    sum(double *values, std::size_t n);
+    unsigned long long
+    sum(unsigned long long value);
+    int
+    maximum(int value);
+
+    // Every rank receives rank 0's bytes.
+    void
+    broadcast(void *data, std::size_t bytes);
+
+    // Each rank's entries [first * per_cell, second * per_cell) of
+    // per_cell_items (owned_cells(n_cells)) sent to every other rank.
+    void
+    gather_owned_bytes(void        *data,
+                       std::size_t  bytes_per_cell,
+                       unsigned int n_cells);
+
+    template <typename T>
+    void
+    gather_owned_cells(std::vector<T>    &per_cell_items,
+                       const unsigned int n_cells)
+    {
+      static_assert(std::is_trivially_copyable<T>::value,
+                    "cell records are sent as bytes");
+      if (n_ranks() == 1 || per_cell_items.empty())
+        return;
+      gather_owned_bytes(per_cell_items.data(),
+                         sizeof(T) * (per_cell_items.size() / n_cells),
+                         n_cells);
+    }
+  } // namespace parallel
+} // namespace deepdraw
+
+#endif

@@ -1,0 +1,177 @@
+#!/usr/bin/env python3
+"""Failures under mpirun (issue 29, D199), each with 2 ranks: the reason is
+printed once, the exit code is the one-rank run's, and no rank is left
+waiting.
+- Input errors found by every rank (a parameter out of range, KLU, which
+  runs on one rank, --study): exit 2, the message once, nothing written.
+- An input error found by rank 0 alone (the output directory is a regular
+  file; only rank 0 makes and locks it): exit 2 once, the other rank does
+  not hang (the start-up agreement).
+- SIGTERM to mpirun, which passes it on to every rank at its own time: the
+  ranks stop at the same increment with the reason once and a checkpoint
+  (mpirun, signalled itself, exits with its own code); --resume with 2
+  ranks ends the run with the tables of the uninterrupted 2-rank run within
+  1e-8 (ranks_agree_test's bound).
+- SIGTERM to one rank only (as a batch system may send it): the ranks stop
+  at the same increment and every rank ends with 3.
+- A failure of rank 0 alone in the middle of the run (a VTU file it cannot
+  write; only rank 0 writes): its reason once, exit code 3 within the
+  ranks' patience (60 s), the tables on disk end with whole rows at 0.9 or
+  1.0 mm.
+
+    rank_failures_test.py --deepdraw EXE --source-dir REPO --work-dir DIR
+"""
+import signal
+import subprocess
+import time
+
+from mpirun_tools import SHORT_CUP, run, script_test, start
+
+BAD_ELEMENTS = """include {base}
+subsection Geometry
+  set Elements along x = 0
+end
+"""
+
+KLU = """include {base}
+subsection Linear solver
+  set Type = KLU
+end
+"""
+
+# Slower, so that a signal finds it running: the same cup on 24 x 24 x 2.
+FINER = """include {base}
+subsection Geometry
+  set Elements along x = 24
+  set Elements along y = 24
+end
+subsection Output
+  set Output interval = 10
+end
+"""
+
+
+def once(failures, what, output, text, code, expected_code):
+    print(f"{what}: exit code {code}, {output.count(text)} x '{text}'")
+    if code != expected_code:
+        failures.append(f"{what}: exit code {code}, expected "
+                        f"{expected_code}")
+    if output.count(text) != 1:
+        failures.append(f"{what}: '{text}' printed {output.count(text)} "
+                        "times, expected once")
+
+
+def input_errors(failures, args, work):
+    (work / "bad.prm").write_text(BAD_ELEMENTS.format(base=SHORT_CUP))
+    (work / "klu.prm").write_text(KLU.format(base=SHORT_CUP))
+    cases = [("a parameter out of range", ["bad.prm"], "bad"),
+             ("KLU", ["klu.prm"], "klu"),
+             ("--study", [SHORT_CUP, "--study", "Geometry/Layers = 2, 4"],
+              "study")]
+    for what, arguments, output in cases:
+        code, printed = run(2, args.deepdraw, work, *arguments,
+                            "--output-directory", output, timeout=120)
+        once(failures, what, printed, "deepdraw: error in the input:", code,
+             2)
+        if (work / output).exists():
+            failures.append(f"{what}: the output directory was made")
+    (work / "a_file").write_text("not a directory\n")
+    code, printed = run(2, args.deepdraw, work, SHORT_CUP,
+                        "--output-directory", "a_file", timeout=120)
+    once(failures, "the output directory a regular file", printed,
+         "deepdraw: error in the input:", code, 2)
+
+
+def signal_and_resume(failures, args, work):
+    (work / "finer.prm").write_text(FINER.format(base=SHORT_CUP))
+    code, _ = run(2, args.deepdraw, work, "finer.prm", "--output-directory",
+                  "whole", "--quiet")
+    if code != 0:
+        failures.append(f"the 2-rank run to compare with: exit code {code}")
+        return
+    process = start(2, args.deepdraw, work, "finer.prm",
+                    "--output-directory", "stopped")
+    statistics = work / "stopped" / "statistics.csv"
+    deadline = time.time() + 300
+    while not statistics.exists() or \
+            len(statistics.read_text().splitlines()) < 5:
+        if process.poll() is not None or time.time() > deadline:
+            failures.append("the run to be stopped ended or hung")
+            return
+        time.sleep(0.01)
+    process.send_signal(signal.SIGTERM)
+    printed, _ = process.communicate(timeout=120)
+    print(printed[-1500:])
+    # mpirun, signalled itself, ends with its own code (1 in Open MPI 4.1).
+    once(failures, "SIGTERM to mpirun", printed, "deepdraw: the run stopped: "
+         "stopped by SIGTERM", max(process.returncode, 1), 1)
+    # A signal to rank 0 alone (as a batch system may send): the ranks
+    # agree to stop at the same increment, and each ends with 3.
+    process = start(2, args.deepdraw, work, "finer.prm",
+                    "--output-directory", "stopped", "--resume")
+    stopped_at = len(statistics.read_text().splitlines())
+    deadline = time.time() + 300
+    while len(statistics.read_text().splitlines()) < stopped_at + 3:
+        if process.poll() is not None or time.time() > deadline:
+            failures.append("the resumed run to be stopped ended or hung")
+            return
+        time.sleep(0.01)
+    # The newest of the ranks (not mpirun, whose command line begins with
+    # its own name).
+    subprocess.run(["pkill", "-TERM", "-n", "-f",
+                    "^[^ ]*deepdraw finer.prm --output-directory stopped"])
+    printed, _ = process.communicate(timeout=120)
+    print(printed[-1500:])
+    once(failures, "SIGTERM to one rank", printed, "deepdraw: the run "
+         "stopped: stopped by SIGTERM", process.returncode, 3)
+    code, _ = run(2, args.deepdraw, work, "finer.prm", "--output-directory",
+                  "stopped", "--resume", "--quiet")
+    if code != 0:
+        failures.append(f"the resume with 2 ranks: exit code {code}")
+        return
+    failures += script_test.close_tables(work / "whole", work / "stopped",
+                                         "the uninterrupted 2-rank run",
+                                         relative=1e-8)
+
+
+def whole_rows(path):
+    text = path.read_text()
+    return text.endswith("\n")
+
+
+def rank_zero_alone(failures, args, work):
+    # Where rank 0 writes the VTU of load 1.0 (solution-00002.vtu, through
+    # a temporary file) a directory stands: only rank 0 fails, at 1.0.
+    (work / "blocked" / "solution-00002.vtu.tmp").mkdir(parents=True)
+    began = time.time()
+    code, printed = run(2, args.deepdraw, work, SHORT_CUP,
+                        "--output-directory", "blocked", timeout=300)
+    took = time.time() - began
+    print(f"exit code {code} after {took:.1f} s")
+    once(failures, "rank 0 failing alone", printed,
+         "deepdraw: the run stopped:", code, 3)
+    if took > 120:
+        failures.append(f"the job took {took:.0f} s to end")
+    rows = script_test.csv_rows(work / "blocked" / "punch_force.csv")
+    # The increment at 1.0 converged; its outputs stop at the VTU.
+    last = rows[-1]["punch_travel_mm"] if rows else None
+    print(f"punch_force.csv ends at {last} mm")
+    if last is None or not 0.9 - 1e-9 <= last <= 1.0 + 1e-9:
+        failures.append(f"punch_force.csv ends at {last}, expected 0.9 or "
+                        "1.0 mm")
+    for table in (work / "blocked").glob("*.csv"):
+        if not table.read_text().endswith("\n"):
+            failures.append(f"{table.name} does not end with a whole row")
+
+
+def main():
+    args, _, work = script_test.start(__doc__)
+    failures = []
+    input_errors(failures, args, work)
+    signal_and_resume(failures, args, work)
+    rank_zero_alone(failures, args, work)
+    script_test.finish(failures)
+
+
+if __name__ == "__main__":
+    main()
