@@ -1,4 +1,5 @@
-// deepdraw is one process: MPI serves MUMPS and Trilinos on one rank only.
+// Started without mpirun, deepdraw is one MPI process (under mpirun see
+// parallel/run_agreement.h, D199).
 // Started without a launcher (mpirun sets OMPI_COMM_WORLD_SIZE), Open MPI
 // probes the network transports (UCX, OFI) for 0.2 s of every run; the
 // in-process ones chosen here start at once (D98). Nor does it need the
