@@ -1,9 +1,11 @@
+#include <algorithm>
 #include <cerrno>
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
 #include <deepdraw/app/single_process_mpi.h>
 #include <filesystem>
+#include <string>
 #include <sys/types.h>
 #include <system_error>
 #include <unistd.h>
@@ -16,6 +18,19 @@ namespace deepdraw
     namespace
     {
       constexpr const char *base_prefix = "deepdraw-mpi-";
+
+      // Open MPI's variables (OMPI_, PMIX_, ORTE_, OPAL_) as they were
+      // before this process set or MPI_Init added any.
+      std::vector<std::string> mpi_environment_at_start;
+
+      bool
+      is_mpi_variable(const std::string &entry)
+      {
+        for (const char *prefix : {"OMPI_", "PMIX_", "ORTE_", "OPAL_"})
+          if (entry.rfind(prefix, 0) == 0)
+            return true;
+        return false;
+      }
 
       // A run killed with SIGKILL cannot remove its base: the next start
       // removes those whose process (the number in the name) has ended.
@@ -39,6 +54,9 @@ namespace deepdraw
 
     SingleProcessMpi::SingleProcessMpi()
     {
+      for (char **entry = environ; *entry != nullptr; ++entry)
+        if (is_mpi_variable(*entry))
+          mpi_environment_at_start.emplace_back(*entry);
       if (std::getenv("OMPI_COMM_WORLD_SIZE") != nullptr
           || std::getenv("PMIX_RANK") != nullptr)
         return;
@@ -66,6 +84,30 @@ namespace deepdraw
       setenv("OMPI_MCA_orte_tmpdir_base", session_base.c_str(), 1);
       setenv("DEEPDRAW_MPI_SESSION_BASE", session_base.c_str(), 1);
       setenv("OMPI_MCA_ess_singleton_isolated", "1", 1);
+    }
+
+
+    void
+    restore_mpi_environment()
+    {
+      std::vector<std::string> added;
+      for (char **entry = environ; *entry != nullptr; ++entry)
+        if (is_mpi_variable(*entry)
+            && std::find(mpi_environment_at_start.begin(),
+                         mpi_environment_at_start.end(),
+                         *entry)
+                 == mpi_environment_at_start.end())
+          added.emplace_back(*entry);
+      for (const std::string &entry : added)
+        unsetenv(entry.substr(0, entry.find('=')).c_str());
+      for (const std::string &entry : mpi_environment_at_start)
+      {
+        const std::size_t equals = entry.find('=');
+        setenv(entry.substr(0, equals).c_str(),
+               entry.substr(equals + 1).c_str(),
+               1);
+      }
+      unsetenv("DEEPDRAW_MPI_SESSION_BASE");
     }
 
 

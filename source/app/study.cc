@@ -61,6 +61,8 @@ namespace deepdraw
         std::vector<StudyCase>     cases;
         // FILE.prm lists the post-processor "forming limits" (D174).
         bool forming_limits = false;
+        // mpirun and its options for each run (DEEPDRAW_MPI_LAUNCHER, D200).
+        std::vector<std::string> launcher;
       };
 
 
@@ -257,6 +259,7 @@ namespace deepdraw
         io::check_regular_file(prm_file, "parameter file");
         StudySetup setup;
         setup.prm_file = prm_file;
+        setup.launcher = study_launcher();
         ParameterHandler prm;
         read_prm(prm, prm_file);
         setup.variables = parse_study_options(options, prm);
@@ -332,7 +335,12 @@ namespace deepdraw
                 << std::endl;
 
         const StudyRunOutcome outcome
-          = run_deepdraw("/proc/self/exe", input, case_.folder);
+          = run_deepdraw(setup.launcher.empty()
+                           ? std::string("/proc/self/exe")
+                           : fs::read_symlink("/proc/self/exe").string(),
+                         input,
+                         case_.folder,
+                         setup.launcher);
         StudyRow row;
         row.values = case_.values;
         row.failed = outcome.exit_code != 0;

@@ -2,12 +2,17 @@
 #include <cerrno>
 #include <chrono>
 #include <csignal>
+#include <cstdlib>
 #include <cstring>
+#include <deepdraw/app/single_process_mpi.h>
 #include <deepdraw/app/study_run.h>
 #include <deepdraw/io/child_process.h>
+#include <deepdraw/io/input_error.h>
+#include <deepdraw/io/printable_text.h>
 #include <deepdraw/state/stop_request.h>
 #include <fstream>
 #include <sstream>
+#include <unistd.h>
 #include <vector>
 
 namespace deepdraw
@@ -16,6 +21,24 @@ namespace deepdraw
   {
     namespace
     {
+      // An executable file at this path, or (a name without a slash) in
+      // one of the folders of PATH.
+      bool
+      is_program(const std::string &name)
+      {
+        if (name.find('/') != std::string::npos)
+          return ::access(name.c_str(), X_OK) == 0;
+        const char        *path = std::getenv("PATH");
+        std::istringstream folders(path != nullptr ? path : "");
+        for (std::string folder; std::getline(folders, folder, ':');)
+          if (::access(((folder.empty() ? "." : folder) + "/" + name).c_str(),
+                       X_OK)
+              == 0)
+            return true;
+        return false;
+      }
+
+
       // What a run said last on stderr: from its last line that starts
       // with "deepdraw:" (its messages do, doc/user_guide.md §5) to the end,
       // on one line; else the last line that is not blank.
@@ -50,25 +73,52 @@ namespace deepdraw
     } // namespace
 
 
-    StudyRunOutcome
-    run_deepdraw(const std::string &executable,
-                 const std::string &input_prm,
-                 const std::string &run_directory)
+    std::vector<std::string>
+    study_launcher()
     {
-      const io::Redirections redirections{"",
+      const char              *setting = std::getenv("DEEPDRAW_MPI_LAUNCHER");
+      std::vector<std::string> words;
+      std::istringstream       text(setting != nullptr ? setting : "");
+      for (std::string word; text >> word;)
+        words.push_back(word);
+      if (words.empty())
+        return words;
+      if (!is_program(words[0]))
+        throw InputError("DEEPDRAW_MPI_LAUNCHER = '" + io::one_line(setting)
+                         + "': the program '" + io::one_line(words[0])
+                         + "' is not found (allowed: mpirun and its options, "
+                           "such as 'mpirun -np 4')");
+      restore_mpi_environment();
+      return words;
+    }
+
+
+    StudyRunOutcome
+    run_deepdraw(const std::string              &executable,
+                 const std::string              &input_prm,
+                 const std::string              &run_directory,
+                 const std::vector<std::string> &launcher)
+    {
+      const io::Redirections   redirections{"",
                                           run_directory + "/deepdraw.log",
                                           run_directory + "/deepdraw.err"};
-      int                    error = 0, signal = 0;
-      StudyRunOutcome        outcome;
-      const auto             start = std::chrono::steady_clock::now();
-      outcome.exit_code            = io::spawn_and_wait(
-        executable,
-        false,
-        {"deepdraw", input_prm, "--output-directory", run_directory},
-        redirections,
-        &error,
-        &signal,
-        &state::requested_stop_signal);
+      int                      error = 0, signal = 0;
+      StudyRunOutcome          outcome;
+      const auto               start     = std::chrono::steady_clock::now();
+      std::vector<std::string> arguments = launcher;
+      arguments.insert(arguments.end(),
+                       {launcher.empty() ? "deepdraw" : executable,
+                        input_prm,
+                        "--output-directory",
+                        run_directory});
+      outcome.exit_code
+        = io::spawn_and_wait(launcher.empty() ? executable : launcher[0],
+                             !launcher.empty(),
+                             arguments,
+                             redirections,
+                             &error,
+                             &signal,
+                             &state::requested_stop_signal);
       outcome.wall_seconds = std::chrono::duration<double>(
                                std::chrono::steady_clock::now() - start)
                                .count();

@@ -1,3 +1,4 @@
+#include <deepdraw/parallel/ranks.h>
 #include <deepdraw/problem/console_report.h>
 #include <iomanip>
 #include <iostream>
@@ -50,6 +51,10 @@ namespace deepdraw
                 << " cells, " << n_u << " displacement unknowns, "
                 << n_unknowns - n_u << " contact unknowns, " << element
                 << " element"
+                << (parallel::n_ranks() > 1
+                      ? ", " + std::to_string(parallel::n_ranks())
+                          + " MPI ranks"
+                      : std::string())
                 << (resumed ? ", resumed at load " + format_load(first_load)
                             : std::string())
                 << std::endl;

@@ -33,6 +33,13 @@ namespace deepdraw
       std::string session_base;
     };
 
+    // Open MPI's variables (OMPI_, PMIX_, ORTE_, OPAL_) back to what they
+    // were before the constructor and MPI_Init set theirs: a process started
+    // under its own mpirun (a study's run, D200) would otherwise take this
+    // singleton's settings for a job it runs in, and end at once.
+    void
+    restore_mpi_environment();
+
     // Open MPI's start-up aborts with pages of text when the working
     // directory has been deleted (D167): the reason, to be checked before
     // MPI_Init, or "" if getcwd(3) works.

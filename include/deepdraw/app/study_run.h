@@ -28,12 +28,24 @@ namespace deepdraw
 
     // Runs `executable input_prm --output-directory run_directory` in the
     // current directory (include paths of prm files are relative to it),
-    // stdout to run_directory/deepdraw.log, stderr to deepdraw.err, stdin
-    // from /dev/null, and waits for it. run_directory must exist.
+    // after the words of `launcher` (mpirun and its options; none: the
+    // executable alone), stdout to run_directory/deepdraw.log, stderr to
+    // deepdraw.err, stdin from /dev/null, and waits for it. run_directory
+    // must exist.
     StudyRunOutcome
-    run_deepdraw(const std::string &executable,
-                 const std::string &input_prm,
-                 const std::string &run_directory);
+    run_deepdraw(const std::string              &executable,
+                 const std::string              &input_prm,
+                 const std::string              &run_directory,
+                 const std::vector<std::string> &launcher = {});
+
+    // The launcher of a study's runs: the words of the environment
+    // variable DEEPDRAW_MPI_LAUNCHER ("mpirun -np 4"; unset or blank: none,
+    // D200). Throws InputError if its program is not found in PATH. With a
+    // launcher, Open MPI's variables of this process's environment, which
+    // the runs inherit, are put back to what they were before MPI started
+    // (restore_mpi_environment).
+    std::vector<std::string>
+    study_launcher();
   } // namespace app
 } // namespace deepdraw
 
