@@ -45,8 +45,15 @@ namespace deepdraw
     write_file_atomically(const std::string &filename,
                           const std::string &content)
     {
-      if (!writes_files())
-        return;
+      if (writes_files())
+        write_own_file_atomically(filename, content);
+    }
+
+
+    void
+    write_own_file_atomically(const std::string &filename,
+                              const std::string &content)
+    {
       const std::string temporary = filename + ".tmp";
       // O_NONBLOCK: a named pipe in place of the temporary file fails to
       // open instead of blocking (D164).

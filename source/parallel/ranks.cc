@@ -136,6 +136,14 @@ namespace deepdraw
 
 
     void
+    barrier()
+    {
+      if (n_ranks() > 1)
+        MPI_Barrier(MPI_COMM_WORLD);
+    }
+
+
+    void
     broadcast(void *data, const std::size_t bytes)
     {
       if (n_ranks() > 1)

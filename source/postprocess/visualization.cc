@@ -15,6 +15,8 @@
 #include <deepdraw/io/output_file.h>
 #include <deepdraw/io/printable_text.h>
 #include <deepdraw/io/pvd_record.h>
+#include <deepdraw/io/writing_rank.h>
+#include <deepdraw/parallel/ranks.h>
 #include <deepdraw/postprocess/interface.h>
 #include <deepdraw/postprocess/vtu_field.h>
 #include <iomanip>
@@ -35,11 +37,13 @@ namespace deepdraw
           "rolling direction, equivalent stress, equivalent plastic strain";
 
       std::string
-      numbered(const std::string &stem, const unsigned int step)
+      numbered(const std::string &stem,
+               const unsigned int step,
+               const std::string &extension = ".vtu")
       {
         std::ostringstream name;
         name << stem << "-" << std::setw(5) << std::setfill('0') << step
-             << ".vtu";
+             << extension;
         return name.str();
       }
 
@@ -247,6 +251,19 @@ namespace deepdraw
         // field and the vertices are checked before anything is written.
         DataOut<3> data_out;
         data_out.attach_triangulation(simulation.sheet().triangulation());
+        // Under mpirun each rank writes the cells whose elements it
+        // evaluates, and rank 0 a .pvtu record of the pieces (D201).
+        const unsigned int ranks = parallel::n_ranks();
+        const auto         owned = parallel::owned_cells(
+          simulation.sheet().triangulation().n_active_cells());
+        if (ranks > 1)
+          data_out.set_cell_selection(
+            [owned](const typename Triangulation<3>::cell_iterator &cell)
+            {
+              return cell->is_active()
+                     && cell->active_cell_index() >= owned.first
+                     && cell->active_cell_index() < owned.second;
+            });
         for (const VtuData::Field &field : data.fields())
         {
           io::check_finite_for_output(
@@ -289,8 +306,29 @@ namespace deepdraw
         flags.compression_level = DataOutBase::VtkFlags::default_compression;
         data_out.set_flags(flags);
         data_out.write_vtu(vtu);
-        io::write_file_atomically(path, vtu.str());
-        return name;
+        if (ranks == 1)
+        {
+          io::write_file_atomically(path, vtu.str());
+          return name;
+        }
+        std::vector<std::string> pieces;
+        for (unsigned int rank = 0; rank < ranks; ++rank)
+          pieces.push_back(
+            numbered("solution", output_step, "." + std::to_string(rank))
+            + ".vtu");
+        io::write_own_file_atomically(simulation.output_directory() + "/"
+                                        + pieces[parallel::this_rank()],
+                                      vtu.str());
+        // The record names only pieces that are on disk.
+        parallel::barrier();
+        std::ostringstream record;
+        data_out.write_pvtu_record(record, pieces);
+        const std::string record_name
+          = numbered("solution", output_step, ".pvtu");
+        io::write_file_atomically(simulation.output_directory() + "/"
+                                    + record_name,
+                                  record.str());
+        return record_name;
       }
     } // namespace
 

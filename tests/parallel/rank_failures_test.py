@@ -111,7 +111,9 @@ def signal_and_resume(failures, args, work):
                     "--output-directory", "stopped", "--resume")
     stopped_at = len(statistics.read_text().splitlines())
     deadline = time.time() + 300
-    while len(statistics.read_text().splitlines()) < stopped_at + 3:
+    # One increment after the resume, six before the end: time enough for
+    # the signal to arrive before the last increment.
+    while len(statistics.read_text().splitlines()) < stopped_at + 1:
         if process.poll() is not None or time.time() > deadline:
             failures.append("the resumed run to be stopped ended or hung")
             return
@@ -140,9 +142,10 @@ def whole_rows(path):
 
 
 def rank_zero_alone(failures, args, work):
-    # Where rank 0 writes the VTU of load 1.0 (solution-00002.vtu, through
-    # a temporary file) a directory stands: only rank 0 fails, at 1.0.
-    (work / "blocked" / "solution-00002.vtu.tmp").mkdir(parents=True)
+    # Where rank 0 writes its piece of the VTU of load 1.0
+    # (solution-00002.0.vtu, through a temporary file) a directory stands:
+    # only rank 0 fails, at 1.0, while rank 1 waits for the pieces.
+    (work / "blocked" / "solution-00002.0.vtu.tmp").mkdir(parents=True)
     began = time.time()
     code, printed = run(2, args.deepdraw, work, SHORT_CUP,
                         "--output-directory", "blocked", timeout=300)

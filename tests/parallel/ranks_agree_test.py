@@ -14,6 +14,9 @@ Expectations, independent of the program's own numbers:
   magnitude (the issue's bound): the ranks sum the element contributions
   in another order, and MUMPS factorises in another order across ranks, so
   the last bits differ (measured: 4e-11);
+- the sheet's VTU output as a .pvtu record per output step naming one
+  piece per rank, every piece on disk, the pieces' cells adding up to those
+  of the one-rank run's VTU;
 - the resumed runs within the same 1e-8 of the uninterrupted 2-rank run,
   whatever their rank count (every rank holds the whole state, so a
   checkpoint does not depend on the ranks). Not bit for bit even with 2
@@ -23,6 +26,7 @@ Expectations, independent of the program's own numbers:
 
     ranks_agree_test.py --deepdraw EXE --source-dir REPO --work-dir DIR
 """
+import re
 import shutil
 
 from mpirun_tools import SHORT_CUP, newton_path, run, script_test
@@ -54,6 +58,31 @@ def compare(failures, expected, actual, what):
                                          relative=1e-8)
 
 
+def cells(path):
+    """NumberOfCells in the pieces of a VTU file."""
+    return sum(int(n) for n in
+               re.findall(r'NumberOfCells="(\d+)"', path.read_text()))
+
+
+def check_pieces(failures, serial, parallel, ranks):
+    """Every sheet output of the run on `ranks` ranks is a .pvtu naming one
+    piece per rank, each on disk, with the serial VTU's cells between them
+    (D201)."""
+    records = sorted(parallel.glob("solution-*.pvtu"))
+    if len(records) != len(list(serial.glob("solution-*.vtu"))):
+        failures.append(f"{parallel.name}: {len(records)} .pvtu records")
+    for record in records:
+        pieces = re.findall(r'Piece Source="([^"]+)"', record.read_text())
+        missing = [p for p in pieces if not (parallel / p).is_file()]
+        whole = serial / record.name.replace(".pvtu", ".vtu")
+        split = sum(cells(parallel / p) for p in pieces if p not in missing)
+        if len(pieces) != ranks or missing or split != cells(whole):
+            failures.append(f"{record.name}: {len(pieces)} pieces, missing "
+                            f"{missing}, {split} cells against "
+                            f"{cells(whole)}")
+    print(f"{parallel.name}: {len(records)} .pvtu records of {ranks} pieces")
+
+
 def must_run(failures, ranks, args, work, *arguments):
     code, _ = run(ranks, args.deepdraw, work, *arguments)
     if code != 0:
@@ -71,6 +100,8 @@ def main():
                  "--output-directory", name, "--quiet")
     compare(failures, work / "one", work / "two", "2 ranks against 1")
     compare(failures, work / "one", work / "three", "3 ranks against 1")
+    check_pieces(failures, work / "one", work / "two", 2)
+    check_pieces(failures, work / "one", work / "three", 3)
 
     (work / "cut_z.prm").write_text(CUT_Z.format(base=SHORT_CUP))
     for ranks, name in ((0, "cut_z_one"), (2, "cut_z_two")):

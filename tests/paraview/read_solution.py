@@ -1,4 +1,4 @@
-# pvpython: opens every VTU part of OUTPUT_DIR/solution.pvd the way ParaView
+# pvpython: opens every VTU (or PVTU) part of OUTPUT_DIR/solution.pvd the way ParaView
 # does and checks what a user colours by (doc/user_guide.md §3): the sheet's
 # point fields present, finite and in plausible ranges; each tool with its
 # normals. Exit code 1 with the reason otherwise.
@@ -8,7 +8,8 @@ import sys
 import xml.etree.ElementTree as ElementTree
 
 from paraview import servermanager
-from paraview.simple import XMLUnstructuredGridReader, PVDReader
+from paraview.simple import XMLUnstructuredGridReader, PVDReader, \
+    XMLPartitionedUnstructuredGridReader
 from vtk.numpy_interface import dataset_adapter
 import numpy
 
@@ -42,7 +43,10 @@ sheets = tools = 0
 for entry in entries:
     name = entry.get("file")
     path = os.path.join(output, name)
-    reader = XMLUnstructuredGridReader(FileName=[path])
+    # A run under mpirun writes the sheet as a .pvtu record of one piece
+    # per rank (D201).
+    reader = XMLPartitionedUnstructuredGridReader(FileName=[path]) \
+        if name.endswith(".pvtu") else XMLUnstructuredGridReader(FileName=[path])
     reader.UpdatePipeline()
     data, point_data = arrays(reader)
     points = numpy.asarray(data.Points)

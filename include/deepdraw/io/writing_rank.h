@@ -4,6 +4,8 @@
 #ifndef deepdraw_io_writing_rank_h
 #define deepdraw_io_writing_rank_h
 
+#include <string>
+
 namespace deepdraw
 {
   namespace io
@@ -13,6 +15,12 @@ namespace deepdraw
     // main sets it once, after MPI has started.
     void
     set_writes_files(bool writes);
+
+    // write_file_atomically on every rank: each rank's piece of a VTU
+    // output (D201).
+    void
+    write_own_file_atomically(const std::string &filename,
+                              const std::string &content);
   } // namespace io
 } // namespace deepdraw
 

@@ -40,6 +40,10 @@ namespace deepdraw
     int
     maximum(int value);
 
+    // Returns once every rank has called it.
+    void
+    barrier();
+
     // Every rank receives rank 0's bytes.
     void
     broadcast(void *data, std::size_t bytes);
