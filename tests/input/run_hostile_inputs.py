@@ -134,7 +134,10 @@ def run_case(case, deepdraw, source, work, launcher=()):
     if run.returncode != case["exit"]:
         problems.append("exit code %d, expected %d" % (run.returncode,
                                                        case["exit"]))
-    for part in case.get("messages", []):
+    expected = case.get("messages", [])
+    if launcher:
+        expected = case.get("launcher_messages", expected)
+    for part in expected:
         if part not in err:
             problems.append("message lacks '%s'" % part)
     if case["exit"] in (2, 3):
