@@ -1,7 +1,7 @@
 #include <algorithm>
+#include <deal.II/base/mpi.h>
 #include <deepdraw/parallel/ranks.h>
 #include <mpi.h>
-#include <vector>
 
 namespace deepdraw
 {
@@ -52,12 +52,20 @@ namespace deepdraw
     }
 
 
+    std::pair<std::size_t, std::size_t>
+    share(const std::size_t n_items, const unsigned int rank)
+    {
+      const unsigned long long n = n_ranks();
+      return {n_items * rank / n, n_items * (rank + 1ULL) / n};
+    }
+
+
     std::pair<unsigned int, unsigned int>
     owned_cells(const unsigned int n_active_cells)
     {
-      const unsigned long long n = n_ranks(), rank = this_rank();
-      return {static_cast<unsigned int>(n_active_cells * rank / n),
-              static_cast<unsigned int>(n_active_cells * (rank + 1) / n)};
+      const auto cells = share(n_active_cells, this_rank());
+      return {static_cast<unsigned int>(cells.first),
+              static_cast<unsigned int>(cells.second)};
     }
 
 
@@ -69,53 +77,35 @@ namespace deepdraw
       // Reduced on rank 0 and broadcast, rather than MPI_Allreduce: the
       // standard does not promise every rank the same rounding, and the
       // ranks' decisions (contact states, convergence) must agree.
-      std::vector<double> piece;
       for (std::size_t first = 0; first < n; first += largest_piece)
-      {
-        const int count = std::min(largest_piece, n - first);
-        if (is_root())
-          MPI_Reduce(MPI_IN_PLACE,
-                     values + first,
-                     count,
-                     MPI_DOUBLE,
-                     MPI_SUM,
-                     0,
-                     MPI_COMM_WORLD);
-        else
-          MPI_Reduce(values + first,
-                     nullptr,
-                     count,
-                     MPI_DOUBLE,
-                     MPI_SUM,
-                     0,
-                     MPI_COMM_WORLD);
-      }
+        MPI_Reduce(is_root() ? MPI_IN_PLACE : values + first,
+                   values + first,
+                   std::min(largest_piece, n - first),
+                   MPI_DOUBLE,
+                   MPI_SUM,
+                   0,
+                   MPI_COMM_WORLD);
       broadcast(values, n * sizeof(double));
     }
 
 
+    // Integers: every rank gets the exact result from deal.II's
+    // MPI_Allreduce.
     unsigned long long
     sum(const unsigned long long value)
     {
-      unsigned long long result = value;
-      if (n_ranks() > 1)
-        MPI_Allreduce(&value,
-                      &result,
-                      1,
-                      MPI_UNSIGNED_LONG_LONG,
-                      MPI_SUM,
-                      MPI_COMM_WORLD);
-      return result;
+      return n_ranks() == 1
+               ? value
+               : dealii::Utilities::MPI::sum(value, MPI_COMM_WORLD);
     }
 
 
     int
     maximum(const int value)
     {
-      int result = value;
-      if (n_ranks() > 1)
-        MPI_Allreduce(&value, &result, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
-      return result;
+      return n_ranks() == 1
+               ? value
+               : dealii::Utilities::MPI::max(value, MPI_COMM_WORLD);
     }
 
 
@@ -156,11 +146,9 @@ namespace deepdraw
                        const std::size_t  bytes_per_cell,
                        const unsigned int n_cells)
     {
-      const unsigned long long n = n_ranks();
-      for (unsigned long long rank = 0; rank < n; ++rank)
+      for (unsigned int rank = 0; rank < n_ranks(); ++rank)
       {
-        const std::size_t first = n_cells * rank / n;
-        const std::size_t end   = n_cells * (rank + 1) / n;
+        const auto [first, end] = share(n_cells, rank);
         broadcast_from(static_cast<char *>(data) + first * bytes_per_cell,
                        (end - first) * bytes_per_cell,
                        rank);

@@ -303,14 +303,10 @@ namespace deepdraw
                         || pattern.begin(0)->column() == 0),
                   ExcMessage("MUMPS: a compressed square pattern is needed"));
       analysed_pattern.take(pattern);
-      // This rank's rows: all of them, or its contiguous share.
-      const unsigned long long n_rows = pattern.n_rows(),
-                               ranks  = parallel::n_ranks(),
-                               rank   = parallel::this_rank();
-      const types::global_dof_index first_row
-        = distributed ? n_rows * rank / ranks : 0;
-      const types::global_dof_index end_row
-        = distributed ? n_rows * (rank + 1) / ranks : n_rows;
+      // This rank's rows: its share (all of them on one rank).
+      const std::size_t n_rows = pattern.n_rows();
+      const auto [first_row, end_row]
+        = parallel::share(n_rows, parallel::this_rank());
       // A square compressed pattern has no empty row (the diagonal first).
       const auto first_entry = [&](const types::global_dof_index row)
       {

@@ -33,7 +33,10 @@ import subprocess
 import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1]
+                       / "parallel"))
 import hostile_cases  # noqa: E402
+import mpirun_tools  # noqa: E402  (tests/parallel/mpirun_tools.py)
 
 
 def printable(text):
@@ -111,12 +114,10 @@ def run_case(case, deepdraw, source, work, launcher=()):
                                       "output"])
         command = list(launcher) + [deepdraw] + \
             [a.format(**context) for a in arguments]
-        environment = dict(os.environ)
-        environment["OMPI_ALLOW_RUN_AS_ROOT"] = "1"
-        environment["OMPI_ALLOW_RUN_AS_ROOT_CONFIRM"] = "1"
         run = subprocess.run(command, cwd=directory, stdout=subprocess.PIPE,
                              stderr=subprocess.PIPE, timeout=300,
-                             preexec_fn=case.get("preexec"), env=environment)
+                             preexec_fn=case.get("preexec"),
+                             env=mpirun_tools.environment())
     finally:
         if "cleanup" in case:
             case["cleanup"](context)

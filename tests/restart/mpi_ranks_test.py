@@ -7,31 +7,16 @@ Expectations are exit codes and equal tables, so there is no tolerance.
 
     mpi_ranks_test.py --deepdraw EXE --source-dir REPO --work-dir DIR
 """
-import os
 import pathlib
-import subprocess
 import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1]
+                       / "parallel"))
 import script_test  # noqa: E402  (tests/script_test.py)
+import mpirun_tools  # noqa: E402  (tests/parallel/mpirun_tools.py)
 
 PRM = pathlib.Path(__file__).with_name("short_cup.prm")
-
-
-def mpirun(ranks, deepdraw, output, work):
-    """Runs deepdraw under mpirun with `ranks` ranks (oversubscribed, and
-    allowed as root, as CI runs); returns (exit code, output)."""
-    environment = dict(os.environ)
-    environment["OMPI_ALLOW_RUN_AS_ROOT"] = "1"
-    environment["OMPI_ALLOW_RUN_AS_ROOT_CONFIRM"] = "1"
-    command = ["mpirun", "--oversubscribe", "-np", str(ranks), deepdraw,
-               str(PRM), "--output-directory", output]
-    print("running:", " ".join(command), flush=True)
-    result = subprocess.run(command, cwd=work, env=environment,
-                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                            text=True, timeout=600)
-    print(result.stdout[-3000:])
-    return result.returncode, result.stdout
 
 
 def main():
@@ -40,7 +25,8 @@ def main():
 
     script_test.run([args.deepdraw, str(PRM), "--output-directory", "plain"],
                     work, tail=300)
-    code, _ = mpirun(1, args.deepdraw, "one", work)
+    code, _ = mpirun_tools.run(1, args.deepdraw, work, PRM,
+                               "--output-directory", "one")
     if code != 0:
         failures.append(f"one rank under mpirun: exit code {code}")
     else:

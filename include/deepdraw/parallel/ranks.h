@@ -26,9 +26,14 @@ namespace deepdraw
     bool
     is_root();
 
+    // Rank `rank`'s share [first, second) of n_items numbered items:
+    // contiguous, in the ranks' order, their sizes differing by at most one
+    // (all of them on one rank).
+    std::pair<std::size_t, std::size_t>
+    share(std::size_t n_items, unsigned int rank);
+
     // The active cells [first, second) whose elements this rank
-    // evaluates: contiguous shares of the active-cell numbering, their
-    // sizes differing by at most one.
+    // evaluates: its share of the active-cell numbering.
     std::pair<unsigned int, unsigned int>
     owned_cells(unsigned int n_active_cells);
 
@@ -48,8 +53,8 @@ namespace deepdraw
     void
     broadcast(void *data, std::size_t bytes);
 
-    // Each rank's entries [first * per_cell, second * per_cell) of
-    // per_cell_items (owned_cells(n_cells)) sent to every other rank.
+    // Each rank's entries of per_cell_items, those of its owned_cells
+    // (n_cells), sent to every other rank.
     void
     gather_owned_bytes(void        *data,
                        std::size_t  bytes_per_cell,
