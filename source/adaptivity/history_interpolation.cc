@@ -29,23 +29,31 @@ namespace deepdraw
     std::vector<double>
     trilinear_weights(const Quadrature<3> &quadrature, const Point<3> &xi)
     {
-      // The two coordinates of the rule per direction (its first 8 points:
-      // the selective reduced rule appends the centre with weight 0).
-      const unsigned int n   = fe::n_weighted_points;
-      double             low = 1., high = 0.;
-      for (unsigned int q = 0; q < n; ++q)
-      {
-        low  = std::min(low, quadrature.point(q)[0]);
-        high = std::max(high, quadrature.point(q)[0]);
-      }
+      // Per direction, linear between the two of the rule's coordinates
+      // that bracket xi (the outer two beyond them); the weighted points
+      // come first, the selective reduced rule appends the centre.
+      const unsigned int  n = fe::n_weighted_points(quadrature);
       std::vector<double> weights(n, 1.);
-      for (unsigned int q = 0; q < n; ++q)
-        for (unsigned int d = 0; d < 3; ++d)
+      for (unsigned int d = 0; d < 3; ++d)
+      {
+        std::vector<double> coordinates;
+        for (unsigned int q = 0; q < n; ++q)
+          coordinates.push_back(quadrature.point(q)[d]);
+        std::sort(coordinates.begin(), coordinates.end());
+        coordinates.erase(std::unique(coordinates.begin(), coordinates.end()),
+                          coordinates.end());
+        std::size_t k = 0;
+        while (k + 2 < coordinates.size() && xi[d] > coordinates[k + 1])
+          ++k;
+        const double low = coordinates[k], high = coordinates[k + 1];
+        for (unsigned int q = 0; q < n; ++q)
         {
-          const bool upper = quadrature.point(q)[d] > 0.5 * (low + high);
-          weights[q] *= upper ? (xi[d] - low) / (high - low)
-                              : (high - xi[d]) / (high - low);
+          const double c = quadrature.point(q)[d];
+          weights[q] *= c == high  ? (xi[d] - low) / (high - low)
+                        : c == low ? (high - xi[d]) / (high - low)
+                                   : 0.;
         }
+      }
       return weights;
     }
 

@@ -12,7 +12,7 @@ namespace deepdraw
     plastic_strain_jump(const Triangulation<3>                        &mesh,
                         const std::vector<fe::QuadraturePointHistory> &history)
     {
-      const unsigned int  n_q = fe::n_weighted_points;
+      const unsigned int  n_q = history.size() / mesh.n_active_cells();
       std::vector<double> average(mesh.n_active_cells(), 0.);
       for (std::size_t p = 0; p < history.size(); ++p)
         average[p / n_q]

@@ -38,7 +38,7 @@ namespace deepdraw
       nearest_point(const Quadrature<3> &quadrature, const Point<3> &xi)
       {
         unsigned int nearest = 0;
-        for (unsigned int q = 1; q < fe::n_weighted_points; ++q)
+        for (unsigned int q = 1; q < fe::n_weighted_points(quadrature); ++q)
           if (xi.distance_square(quadrature.point(q))
               < xi.distance_square(quadrature.point(nearest)))
             nearest = q;
@@ -57,8 +57,12 @@ namespace deepdraw
           && options.material == nullptr)
         throw std::invalid_argument("refine_and_transfer: the interpolated "
                                     "history needs the material");
-      const unsigned int n_points = fe::n_weighted_points;
-      const std::size_t  n_dofs   = dof_handler.n_dofs();
+      // The rule follows from the state's points per cell (D202).
+      const unsigned int n_points
+        = state.history.size() / triangulation.n_active_cells();
+      const Quadrature<3> quadrature
+        = fe::quadrature_with_weighted_points(n_points);
+      const std::size_t n_dofs = dof_handler.n_dofs();
       if (state.history.size() != triangulation.n_active_cells() * n_points
           || state.total_displacement.size() != n_dofs)
         throw std::logic_error("refine_and_transfer: the state does not "
@@ -179,7 +183,6 @@ namespace deepdraw
           }
       }
 
-      const Quadrature<3> quadrature = fe::selective_reduced_quadrature();
       std::vector<fe::QuadraturePointHistory> history(
         triangulation.n_active_cells() * n_points);
       std::vector<fe::EnhancedParameters> enhanced(

@@ -22,8 +22,11 @@ namespace deepdraw
 
 
     void
-    SheetDiscretisation::create(const blank::BlankGeometry &geometry)
+    SheetDiscretisation::create(const blank::BlankGeometry &geometry,
+                                const unsigned int points_through_thickness)
     {
+      cell_quadrature
+        = fe::selective_reduced_quadrature(points_through_thickness);
       geometry.create_mesh(mesh);
       initial_positions = mesh.get_vertices();
       // The mean in-plane element size of the blank (for the rectangle as
@@ -194,7 +197,7 @@ namespace deepdraw
     {
       // Once per configuration, not per assembly (D13).
       FEValues<3> fe_values(fe_scalar,
-                            fe::selective_reduced_quadrature(),
+                            cell_quadrature,
                             fe::cell_geometry_flags());
       geometry_of_cells.resize(mesh.n_active_cells());
       for (const auto &cell : mesh.active_cell_iterators())
@@ -203,6 +206,20 @@ namespace deepdraw
         fe::compute_cell_geometry(fe_values,
                                   geometry_of_cells[cell->active_cell_index()]);
       }
+    }
+
+
+    const Quadrature<3> &
+    SheetDiscretisation::quadrature() const
+    {
+      return cell_quadrature;
+    }
+
+
+    unsigned int
+    SheetDiscretisation::n_points_per_cell() const
+    {
+      return fe::n_weighted_points(cell_quadrature);
     }
 
 

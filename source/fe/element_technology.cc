@@ -31,9 +31,14 @@ namespace deepdraw
 
 
     unsigned int
-    n_enhanced_parameters(const ElementTechnology technology)
+    n_enhanced_parameters(const ElementTechnology technology,
+                          const unsigned int      points_through_thickness)
     {
-      return technology == ElementTechnology::incompatible_modes ? 9 : 0;
+      if (technology != ElementTechnology::incompatible_modes)
+        return 0;
+      // Three per mode: the Wilson-Taylor modes, and one through-thickness
+      // mode per point through the thickness beyond 2 (D202).
+      return 3 * (3 + points_through_thickness - 2);
     }
 
 
@@ -84,6 +89,22 @@ namespace deepdraw
                         "attempt fails and the increment is cut back "
                         "(D189: the default, as no run was measured to "
                         "gain from the other).");
+      prm.declare_entry(
+        "Points through the thickness",
+        "2",
+        Patterns::Integer(2, 4),
+        "Gauss points of each element through the sheet's thickness (its "
+        "reference z direction), with 2 x 2 in the plane: 2, 3 or 4. With "
+        "3 or 4 the incompatible-modes element adds one or two "
+        "through-thickness modes (12 or 15 enhanced parameters), so that "
+        "the transverse stress vanishes at every point. In plastic bending "
+        "a layer's stress profile kinks at the edge of the elastic core, "
+        "which 2 points a layer integrate with an error of a few per cent "
+        "of the residual stress with few layers: the bent strip's residual "
+        "stress with 4 layers is within 4.0 %, 2.1 % and 1.2 % of the "
+        "closed form with 2, 3 and 4 points (D196, D202). For springback "
+        "with 2 to 4 layers; the assembly costs about 1.6 or 2.2 times "
+        "as much.");
     }
 
 
@@ -99,6 +120,8 @@ namespace deepdraw
       enhanced_max_iterations = prm.get_integer("Enhanced iterations");
       iterate_enhanced_globally
         = prm.get("Enhanced iterations exhausted") == "iterate globally";
+      points_through_thickness
+        = prm.get_integer("Points through the thickness");
     }
   } // namespace fe
 } // namespace deepdraw

@@ -26,7 +26,8 @@ namespace deepdraw
       const FiniteElement<3>           &fe)
         : parameters(parameters)
         , material(material)
-        , n_enhanced(n_enhanced_parameters(parameters.technology))
+        , n_enhanced(n_enhanced_parameters(parameters.technology,
+                                           parameters.points_through_thickness))
         , mean_dilatation(uses_mean_dilatation(parameters.technology))
     {
       AssertDimension(fe.n_dofs_per_cell(), dofs_per_cell);
@@ -49,7 +50,7 @@ namespace deepdraw
                                  unsigned int &plastic_points) const
     {
       const unsigned int n = dofs_per_cell + n_enhanced;
-      Tensor<1, 3>       u[8], alpha_m[3];
+      Tensor<1, 3>       u[8], alpha_m[max_modes];
       for (unsigned int i = 0; i < dofs_per_cell; ++i)
         u[local_node[i]][local_component[i]] = du[i];
       for (unsigned int k = 0; k < n_enhanced; ++k)
@@ -61,10 +62,10 @@ namespace deepdraw
 
       std::fill(residual, residual + n, 0.);
       Tensor<2, 3> P;
-      for (unsigned int q = 0; q < n_weighted_points; ++q)
+      for (unsigned int q = 0; q < geometry.n_points; ++q)
       {
         const Tensor<1, 3> *g       = &geometry.gradient[q * 8];
-        const Tensor<1, 3> *g_modes = &geometry.mode_gradient[q * 3];
+        const Tensor<1, 3> *g_modes = &geometry.mode_gradient[q * max_modes];
         // H: compatible part (its trace replaced by the cell average with
         // mean dilatation) plus the enhanced part.
         Tensor<2, 3> H;
@@ -194,10 +195,10 @@ namespace deepdraw
         component[dofs_per_cell + k] = k % 3;
         beta[dofs_per_cell + k]      = 0.;
       }
-      for (unsigned int q = 0; q < n_weighted_points; ++q)
+      for (unsigned int q = 0; q < geometry.n_points; ++q)
       {
         const Tensor<1, 3> *g       = &geometry.gradient[q * 8];
-        const Tensor<1, 3> *g_modes = &geometry.mode_gradient[q * 3];
+        const Tensor<1, 3> *g_modes = &geometry.mode_gradient[q * max_modes];
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
         {
           const unsigned int a = local_node[i], c = local_component[i];
@@ -287,7 +288,7 @@ namespace deepdraw
                                 unsigned int &plastic_points) const
     {
       constexpr unsigned int nu = dofs_per_cell;
-      Tensor<4, 3>           tangents[n_weighted_points];
+      Tensor<4, 3>           tangents[max_weighted_points];
       if (n_enhanced == 0)
       {
         const ElementStatus status
@@ -337,9 +338,9 @@ namespace deepdraw
       double old_force_scale = 0.;
       {
         double volume = 0.;
-        for (const double JxW : geometry.JxW)
-          volume += JxW;
-        for (unsigned int q = 0; q < n_weighted_points; ++q)
+        for (unsigned int q = 0; q < geometry.n_points; ++q)
+          volume += geometry.JxW[q];
+        for (unsigned int q = 0; q < geometry.n_points; ++q)
           old_force_scale
             = std::max(old_force_scale, old_history[q].state.stress.norm());
         old_force_scale *= 1e-8 * std::pow(volume, 2. / 3.);

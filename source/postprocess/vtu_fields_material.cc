@@ -28,7 +28,7 @@ namespace deepdraw
         Vector<double> &field = data.add_cell_field(simulation, name);
         const std::vector<fe::QuadraturePointHistory> &history
           = simulation.state().history;
-        const unsigned int n_q = fe::n_weighted_points;
+        const unsigned int n_q = history.size() / field.size();
         for (unsigned int cell = 0; cell < field.size(); ++cell)
           for (unsigned int q = 0; q < n_q; ++q)
             field[cell] += value(history[cell * n_q + q]) / n_q;

@@ -24,7 +24,8 @@ namespace deepdraw
       material_model
         = std::make_unique<material::ElastoPlasticity>(parameters.material);
       system = linear_algebra::make_serial_system(parameters.linear_solver);
-      discretisation.create(parameters.geometry);
+      discretisation.create(parameters.geometry,
+                            parameters.element.points_through_thickness);
       element = std::make_unique<fe::HexahedronElement>(
         parameters.element,
         *material_model,
@@ -112,11 +113,15 @@ namespace deepdraw
       initial_point.material_axes = parameters.material.initial_material_axes();
       const unsigned int n_cells
         = discretisation.triangulation().n_active_cells();
-      committed.history.assign(n_cells * fe::n_weighted_points, initial_point);
+      committed.history.assign(n_cells * discretisation.n_points_per_cell(),
+                               initial_point);
       committed.vertices = discretisation.triangulation().get_vertices();
       committed.enhanced_parameters.assign(
-        fe::n_enhanced_parameters(parameters.element.technology) > 0 ? n_cells
-                                                                     : 0,
+        fe::n_enhanced_parameters(parameters.element.technology,
+                                  parameters.element.points_through_thickness)
+            > 0
+          ? n_cells
+          : 0,
         fe::EnhancedParameters());
       committed.next_increment
         = std::min(stage().load_stepping.initial_increment,
@@ -374,9 +379,10 @@ namespace deepdraw
       // Against the mesh (the refinements replayed), not the initial state.
       const std::size_t n_cells
         = discretisation.triangulation().n_active_cells();
-      check_size("quadrature points",
+      check_size("quadrature points (Finite element/Points through the "
+                 "thickness)",
                  saved.history.size(),
-                 n_cells * fe::n_weighted_points);
+                 n_cells * discretisation.n_points_per_cell());
       check_size("cells with enhanced parameters",
                  saved.enhanced_parameters.size(),
                  committed.enhanced_parameters.empty() ? 0 : n_cells);

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <deepdraw/io/binary_stream.h>
 #include <deepdraw/io/printable_text.h>
@@ -6,6 +7,7 @@
 #include <ostream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace deepdraw
 {
@@ -16,6 +18,10 @@ namespace deepdraw
       // A plain binary image in this machine's byte order, with a tag and
       // counts, so that a truncated or foreign stream is detected.
       constexpr char tag[] = "deepdraw-state-5";
+      // Format 5 with more than nine enhanced parameters per cell (3 or 4
+      // points through the thickness, D202): their number comes before the
+      // cells' block. Format 5 itself stays what it was (nine).
+      constexpr char tag_with_thickness_modes[] = "deepdraw-state-6";
       // Written before releases (D150): no end force scale, release loads
       // or supports.
       constexpr char tag_before_release[] = "deepdraw-state-4";
@@ -23,6 +29,7 @@ namespace deepdraw
       constexpr char tag_without_stages[] = "deepdraw-state-3";
       static_assert(sizeof(tag) == sizeof(tag_without_stages));
       static_assert(sizeof(tag) == sizeof(tag_before_release));
+      static_assert(sizeof(tag) == sizeof(tag_with_thickness_modes));
 
       constexpr char source[] = "simulation state: the stream";
 
@@ -114,11 +121,41 @@ namespace deepdraw
             point.material_axes[i][j] = values[k++];
       }
 
-      constexpr std::size_t doubles_per_cell
-        = sizeof(fe::EnhancedParameters) / sizeof(double);
-      static_assert(sizeof(fe::EnhancedParameters)
-                      == doubles_per_cell * sizeof(double),
-                    "EnhancedParameters holds doubles only");
+      // A cell's enhanced parameters as stored, for n of them: values,
+      // evaluated_at, correction, the sensitivity's first n rows (with
+      // n = 9 the bytes of the nine-parameter struct of format 5).
+      std::size_t
+      doubles_per_cell(const unsigned int n)
+      {
+        return n + fe::dofs_per_cell + n + n * fe::dofs_per_cell;
+      }
+
+      void
+      pack(const fe::EnhancedParameters &cell,
+           const unsigned int            n,
+           double                       *out)
+      {
+        out = std::copy_n(cell.values.begin(), n, out);
+        out
+          = std::copy(cell.evaluated_at.begin(), cell.evaluated_at.end(), out);
+        out = std::copy_n(cell.correction.begin(), n, out);
+        std::copy_n(cell.sensitivity.begin(), n * fe::dofs_per_cell, out);
+      }
+
+      void
+      unpack(const double           *in,
+             const unsigned int      n,
+             fe::EnhancedParameters &cell)
+      {
+        cell = fe::EnhancedParameters();
+        std::copy_n(in, n, cell.values.begin());
+        in += n;
+        std::copy_n(in, fe::dofs_per_cell, cell.evaluated_at.begin());
+        in += fe::dofs_per_cell;
+        std::copy_n(in, n, cell.correction.begin());
+        in += n;
+        std::copy_n(in, n * fe::dofs_per_cell, cell.sensitivity.begin());
+      }
 
       void
       put_vector(std::ostream &stream, const Vector<double> &vector)
@@ -237,7 +274,17 @@ namespace deepdraw
     void
     SimulationState::write(std::ostream &stream) const
     {
-      stream.write(tag, sizeof(tag));
+      // The enhanced parameters per cell follow from the points per cell
+      // (4 per point through the thickness, D202).
+      const unsigned int n_enhanced
+        = enhanced_parameters.empty()
+            ? 9
+            : fe::n_enhanced_parameters(
+              fe::ElementTechnology::incompatible_modes,
+              history.size() / enhanced_parameters.size() / 4);
+      const bool thickness_modes = n_enhanced > 9;
+      stream.write(thickness_modes ? tag_with_thickness_modes : tag,
+                   sizeof(tag));
       put(stream, load);
       put(stream, last_load_increment);
       put(stream, increment_number);
@@ -253,9 +300,16 @@ namespace deepdraw
       for (std::size_t q = 0; q < history.size(); ++q)
         pack(history[q], &points[doubles_per_point * q]);
       put_doubles(stream, points.data(), points.size());
+      if (thickness_modes)
+        put(stream, n_enhanced);
       put(stream, enhanced_parameters.size());
+      std::vector<double> cell_doubles(doubles_per_cell(n_enhanced));
       for (const fe::EnhancedParameters &cell : enhanced_parameters)
-        stream.write(reinterpret_cast<const char *>(&cell), sizeof(cell));
+      {
+        pack(cell, n_enhanced, cell_doubles.data());
+        stream.write(reinterpret_cast<const char *>(cell_doubles.data()),
+                     cell_doubles.size() * sizeof(double));
+      }
       put(stream, next_increment);
       for (const auto *bytes : {&contact.pair_open, &contact.pair_status})
       {
@@ -300,8 +354,9 @@ namespace deepdraw
       stream.read(read_tag.data(), sizeof(tag));
       const auto is = [&](const char(&expected)[sizeof(tag)])
       { return stream && read_tag == std::string(expected, sizeof(tag)); };
-      const bool with_release = is(tag);
-      const bool with_stages  = with_release || is(tag_before_release);
+      const bool thickness_modes = is(tag_with_thickness_modes);
+      const bool with_release    = thickness_modes || is(tag);
+      const bool with_stages     = with_release || is(tag_before_release);
       if (!with_stages && !is(tag_without_stages))
         throw std::runtime_error("simulation state: not a deepdraw state");
       read_increment(stream, *this);
@@ -327,15 +382,27 @@ namespace deepdraw
       history.resize(n / doubles_per_point);
       for (std::size_t q = 0; q < history.size(); ++q)
         unpack(&points[doubles_per_point * q], history[q]);
+      unsigned int n_enhanced = 9;
+      if (thickness_modes)
+      {
+        get(stream, n_enhanced);
+        if (n_enhanced % 3 != 0 || n_enhanced < 9
+            || n_enhanced > fe::max_enhanced)
+          throw std::runtime_error("enhanced parameters per cell = "
+                                   + std::to_string(n_enhanced)
+                                   + " (9, 12 or 15)");
+      }
+      std::vector<double> cell_doubles(doubles_per_cell(n_enhanced));
       enhanced_parameters.resize(get_count(stream,
-                                           sizeof(fe::EnhancedParameters),
+                                           cell_doubles.size() * sizeof(double),
                                            "enhanced parameters"));
       for (fe::EnhancedParameters &cell : enhanced_parameters)
       {
-        io::read_bytes(stream, &cell, sizeof(cell), source);
-        check_finite(reinterpret_cast<const double *>(&cell),
-                     doubles_per_cell,
+        get_values(stream, cell_doubles.data(), cell_doubles.size());
+        check_finite(cell_doubles.data(),
+                     cell_doubles.size(),
                      "enhanced parameters");
+        unpack(cell_doubles.data(), n_enhanced, cell);
       }
       get(stream, next_increment);
       if (!std::isfinite(next_increment) || !(next_increment > 0.))

@@ -11,10 +11,15 @@
 //   distance from a child point to its nearest parent Gauss point,
 //   (3/(4 sqrt 3) - 1/4) h = 0.183 h along a halved direction of size h
 //   (the O(h) error of the transfer, doc/theory.md §8), enhanced
-//   parameters kept on unrefined cells and zero on children.
+//   parameters kept on unrefined cells and zero on children;
+// - with 3 Gauss points through the thickness (D202), a cut in z: a field
+//   linear in z is carried exactly by the interpolated transfer (piecewise
+//   linear between the parent's points) and, by the nearest point, with the
+//   largest offset of a child point from its nearest parent point.
 #include "adaptivity/transfer_block.h"
 #include "test_utilities.h"
 
+#include <algorithm>
 #include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_q.h>
@@ -24,6 +29,8 @@
 #include <deal.II/grid/tria.h>
 #include <deepdraw/adaptivity/state_transfer.h>
 #include <deepdraw/fe/selective_reduced_quadrature.h>
+#include <deepdraw/material/elasto_plasticity.h>
+#include <limits>
 
 using namespace dealii;
 using namespace deepdraw;
@@ -56,13 +63,15 @@ namespace
 
   // Quadrature point positions in real space, by active cell.
   std::vector<Point<3>>
-  point_positions(const Triangulation<3> &triangulation)
+  point_positions(const Triangulation<3> &triangulation,
+                  const unsigned int      points_through_thickness = 2)
   {
-    const Quadrature<3>   quadrature = fe::selective_reduced_quadrature();
+    const Quadrature<3> quadrature
+      = fe::selective_reduced_quadrature(points_through_thickness);
     const MappingQ1<3>    mapping;
     std::vector<Point<3>> points;
     for (const auto &cell : triangulation.active_cell_iterators())
-      for (unsigned int q = 0; q < fe::n_weighted_points; ++q)
+      for (unsigned int q = 0; q < fe::n_weighted_points(quadrature); ++q)
         points.push_back(
           mapping.transform_unit_to_real_cell(cell, quadrature.point(q)));
     return points;
@@ -163,6 +172,75 @@ namespace
                                0.,
                                1e-14);
   }
+
+  // epbar = 0.01 z on a 1 x 1 x 1 cell with 3 points through the
+  // thickness, cut in z once, by the given rule; returns the largest error
+  // in mm of z.
+  double
+  transfer_linear_in_z(const adaptivity::HistoryTransfer rule,
+                       const material::ElastoPlasticity &material)
+  {
+    Block block;
+    GridGenerator::hyper_cube(block.triangulation, 0., 1.);
+    block.dof_handler.distribute_dofs(block.fe);
+    block.state.total_displacement.reinit(block.dof_handler.n_dofs());
+    block.state.converged_solution          = block.state.total_displacement;
+    block.state.previous_converged_solution = block.state.total_displacement;
+    fe::QuadraturePointHistory point;
+    point.material_axes = unit_symmetric_tensor<3>();
+    for (const Point<3> &x : point_positions(block.triangulation, 3))
+    {
+      point.state.equivalent_plastic_strain = 0.01 * x[2];
+      block.state.history.push_back(point);
+    }
+    block.triangulation.begin_active()->set_refine_flag(
+      RefinementCase<3>::cut_z);
+    adaptivity::TransferOptions options;
+    options.history  = rule;
+    options.material = &material;
+    adaptivity::refine_and_transfer(block.triangulation,
+                                    block.dof_handler,
+                                    block.state,
+                                    options);
+    const auto positions = point_positions(block.triangulation, 3);
+    double     error     = positions.size() == block.state.history.size()
+                             ? 0.
+                             : std::numeric_limits<double>::infinity();
+    for (unsigned int q = 0; q < positions.size() && std::isfinite(error); ++q)
+      error = std::max(error,
+                       std::abs(
+                         block.state.history[q].state.equivalent_plastic_strain
+                         - 0.01 * positions[q][2])
+                         / 0.01);
+    return error;
+  }
+
+  void
+  check_three_points_through_thickness()
+  {
+    const material::ElastoPlasticity material{material::MaterialParameters()};
+    deepdraw_test::check_close(
+      "3 points through the thickness, cut_z, interpolated: linear epbar "
+      "exact (mm of z)",
+      transfer_linear_in_z(adaptivity::HistoryTransfer::interpolated, material),
+      0.,
+      1e-15);
+    // Gauss points of 3 at 1/2 and 1/2 -+ sqrt(3/5)/2; the lower child's at
+    // 1/4 and 1/4 -+ sqrt(3/5)/4 of the parent. The largest offset from a
+    // child point to its nearest parent point: the child's middle point
+    // (1/4) from the parent's lowest, 1/2 - sqrt(3/5)/2 - 1/4.
+    const double r         = std::sqrt(0.6) / 2.;
+    const double offsets[] = {std::abs(0.25 - r / 2. - (0.5 - r)),
+                              std::abs(0.25 - (0.5 - r)),
+                              std::min(std::abs(0.25 + r / 2. - (0.5 - r)),
+                                       std::abs(0.25 + r / 2. - 0.5))};
+    deepdraw_test::check_close(
+      "3 points through the thickness, cut_z, nearest point: largest offset "
+      "(mm of z)",
+      transfer_linear_in_z(adaptivity::HistoryTransfer::nearest, material),
+      *std::max_element(std::begin(offsets), std::end(offsets)),
+      1e-14);
+  }
 } // namespace
 
 int
@@ -229,5 +307,6 @@ main(int argc, char *argv[])
       + std::to_string(block.triangulation.n_active_cells()) + ")",
     block.triangulation.n_active_cells() == n_before + 1);
   check(block, "cut_z refinement", 0.);
+  check_three_points_through_thickness();
   return deepdraw_test::summary();
 }

@@ -43,13 +43,15 @@ namespace
   std::vector<Tensor<2, 3>>
   cell_average_cauchy_stress(const problem::FormingProblem &forming_problem)
   {
-    const auto &history = forming_problem.access().state().history;
-    std::vector<Tensor<2, 3>> stress(history.size() / fe::n_weighted_points);
+    const auto               &access  = forming_problem.access();
+    const auto               &history = access.state().history;
+    std::vector<Tensor<2, 3>> stress(
+      access.sheet().triangulation().n_active_cells());
+    const unsigned int n_points = history.size() / stress.size();
     for (unsigned int cell = 0; cell < stress.size(); ++cell)
-      for (unsigned int q = 0; q < fe::n_weighted_points; ++q)
+      for (unsigned int q = 0; q < n_points; ++q)
         stress[cell]
-          += fe::cauchy_stress(history[cell * fe::n_weighted_points + q])
-             / double(fe::n_weighted_points);
+          += fe::cauchy_stress(history[cell * n_points + q]) / double(n_points);
     return stress;
   }
 

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/quadrature_lib.h>
 #include <deepdraw/material/elasto_plasticity.h>
 #include <string>
 #include <utility>
@@ -38,18 +39,20 @@ namespace bending_reference
   }
 
   // The element's rule through the thickness t (heights from the
-  // mid-plane, weights of a unit width): 2 Gauss points a layer, at
-  // 1/2 -+ 1/(2 sqrt 3) of it, each carrying t / (2 layers).
+  // mid-plane, weights of a unit width): `points` Gauss points a layer
+  // (2: at 1/2 -+ 1/(2 sqrt 3) of it, each carrying t / (2 layers)).
   inline std::vector<std::pair<double, double>>
-  layer_gauss_rule(const double thickness, const unsigned int layers)
+  layer_gauss_rule(const double       thickness,
+                   const unsigned int layers,
+                   const unsigned int points = 2)
   {
     std::vector<std::pair<double, double>> rule;
     const double                           layer = thickness / layers;
+    const dealii::QGauss<1>                gauss(points);
     for (unsigned int l = 0; l < layers; ++l)
-      for (const double side : {-1., 1.})
-        rule.emplace_back(-thickness / 2. + layer * (l + 0.5)
-                            + side * layer / (2. * std::sqrt(3.)),
-                          layer / 2.);
+      for (unsigned int q = 0; q < points; ++q)
+        rule.emplace_back(-thickness / 2. + layer * (l + gauss.point(q)[0]),
+                          layer * gauss.weight(q));
     return rule;
   }
 

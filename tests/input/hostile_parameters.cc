@@ -93,6 +93,7 @@ namespace
        {"Material/Rolling direction angle", "-1 0"},
        {"Finite element/Enhanced tolerance", ""},
        {"Finite element/Enhanced iterations", ""},
+       {"Finite element/Points through the thickness", ""},
        {"Load stepping/Initial increment", ""},
        {"Load stepping/Minimum increment", "0"},
        {"Load stepping/Maximum increment", ""},

@@ -3,6 +3,9 @@
 // stresses, back stresses, plastic strains, rotated material axes, enhanced
 // parameters and a moved mesh), write() and read() reproduce every field
 // bit for bit; a stream cut short, or one that is not a state, is rejected.
+// With 2 Gauss points through the thickness (9 enhanced parameters a cell,
+// format 5) and with 4 (15, the through-thickness modes' among them
+// non-zero: format 6, D202).
 #include "contact/forming_test_tools.h"
 #include "test_utilities.h"
 
@@ -55,132 +58,155 @@ end
         return false;
     return true;
   }
+
+  void
+  round_trip(const unsigned int points)
+  {
+    const std::string name            = std::to_string(points) + " points: ";
+    const auto        forming_problem = forming_test::run_from_text(
+      std::string(prm_text)
+        + "subsection Finite element\n  set Points through the thickness = "
+        + std::to_string(points) + "\nend\n",
+      "state-test-output");
+    // This model has no tools: the contact history is given values here so
+    // that its serialisation is checked too (the contact runs are checked end
+    // to end by kill_and_resume_test.py).
+    state::SimulationState state = forming_problem->access().state();
+    state.contact.pair_open      = {1, 0, 1};
+    state.contact.pair_status    = {0, 2, 3};
+    state.contact.tool_position  = {0.5, -1.25};
+    // And the refinement cycles of an adaptive run (D84).
+    state.refinements = {{{0, 3, 7}, {1, 12, 4}}, {}, {{2, 5, 3}}};
+
+    // The state is not trivial (else the comparison proves little).
+    double largest_plastic_strain = 0., largest_enhanced = 0., axes_turn = 0.;
+    for (const auto &point : state.history)
+    {
+      largest_plastic_strain = std::max(largest_plastic_strain,
+                                        point.state.equivalent_plastic_strain);
+      axes_turn = std::max(axes_turn, std::abs(point.material_axes[0][2]));
+    }
+    double largest_thickness_mode = 0.;
+    for (const auto &cell : state.enhanced_parameters)
+      for (unsigned int k = 0; k < cell.values.size(); ++k)
+        (k < 9 ? largest_enhanced : largest_thickness_mode)
+          = std::max(k < 9 ? largest_enhanced : largest_thickness_mode,
+                     std::abs(cell.values[k]));
+    deepdraw_test::check_true(name + "through-thickness modes "
+                                + (points > 2 ? "non-zero" : "unused"),
+                              (largest_thickness_mode > 0.) == (points > 2));
+    deepdraw_test::check_true(name + "plastic points (epbar "
+                                + std::to_string(largest_plastic_strain) + ")",
+                              largest_plastic_strain > 1e-3);
+    deepdraw_test::check_true(name + "enhanced parameters are not zero",
+                              largest_enhanced > 0.);
+    deepdraw_test::check_true(name + "material axes turned", axes_turn > 1e-4);
+    deepdraw_test::check_true(name + "three increments, load 0.3",
+                              state.increment_number == 3
+                                && std::abs(state.load - 0.3) < 1e-12);
+    deepdraw_test::check_true(name + "next increment 0.1 (Maximum increment)",
+                              std::abs(state.next_increment - 0.1) < 1e-15);
+
+    std::stringstream stream;
+    state.write(stream);
+    const std::string image = stream.str();
+    deepdraw_test::check_true(
+      name + "format " + (points > 2 ? "6" : "5"),
+      image.rfind(points > 2 ? "deepdraw-state-6" : "deepdraw-state-5", 0)
+        == 0);
+    state::SimulationState copy;
+    std::istringstream     input(image);
+    copy.read(input);
+
+    bool vertices_same = copy.vertices.size() == state.vertices.size();
+    for (unsigned int v = 0; vertices_same && v < state.vertices.size(); ++v)
+      vertices_same = copy.vertices[v] == state.vertices[v];
+    bool history_same = copy.history.size() == state.history.size();
+    for (unsigned int q = 0; history_same && q < state.history.size(); ++q)
+      history_same
+        = copy.history[q].state.stress == state.history[q].state.stress
+          && copy.history[q].state.back_stress
+               == state.history[q].state.back_stress
+          && copy.history[q].state.equivalent_plastic_strain
+               == state.history[q].state.equivalent_plastic_strain
+          && copy.history[q].material_axes == state.history[q].material_axes;
+    bool enhanced_same
+      = copy.enhanced_parameters.size() == state.enhanced_parameters.size();
+    for (unsigned int c = 0;
+         enhanced_same && c < state.enhanced_parameters.size();
+         ++c)
+      enhanced_same = copy.enhanced_parameters[c].values
+                        == state.enhanced_parameters[c].values
+                      && copy.enhanced_parameters[c].sensitivity
+                           == state.enhanced_parameters[c].sensitivity
+                      && copy.enhanced_parameters[c].evaluated_at
+                           == state.enhanced_parameters[c].evaluated_at
+                      && copy.enhanced_parameters[c].correction
+                           == state.enhanced_parameters[c].correction;
+    deepdraw_test::check_true(name + "load, step, increment",
+                              copy.load == state.load
+                                && copy.last_load_increment
+                                     == state.last_load_increment
+                                && copy.increment_number
+                                     == state.increment_number
+                                && copy.next_increment == state.next_increment);
+    deepdraw_test::check_true(name + "contact history",
+                              copy.contact.pair_open == state.contact.pair_open
+                                && copy.contact.pair_status
+                                     == state.contact.pair_status
+                                && copy.contact.tool_position
+                                     == state.contact.tool_position);
+    deepdraw_test::check_true(name + "refinement cycles",
+                              copy.refinements == state.refinements);
+    deepdraw_test::check_true(name + "vertices", vertices_same);
+    deepdraw_test::check_true(
+      "total displacement, Newton unknowns",
+      same(copy.total_displacement, state.total_displacement)
+        && same(copy.converged_solution, state.converged_solution)
+        && same(copy.previous_converged_solution,
+                state.previous_converged_solution));
+    deepdraw_test::check_true(name + "quadrature-point history", history_same);
+    deepdraw_test::check_true(name + "enhanced parameters", enhanced_same);
+
+    // Cut short anywhere: rejected.
+    bool truncated_rejected = true;
+    for (const std::size_t length :
+         {std::size_t(0), std::size_t(10), image.size() / 2, image.size() - 1})
+    {
+      std::istringstream     cut(image.substr(0, length));
+      state::SimulationState target;
+      try
+      {
+        target.read(cut);
+        truncated_rejected = false;
+      }
+      catch (const std::runtime_error &)
+      {
+      }
+    }
+    deepdraw_test::check_true(name + "a stream cut short is rejected",
+                              truncated_rejected);
+    std::istringstream     foreign("this is not a state, only text......");
+    state::SimulationState target;
+    bool                   foreign_rejected = false;
+    try
+    {
+      target.read(foreign);
+    }
+    catch (const std::runtime_error &)
+    {
+      foreign_rejected = true;
+    }
+    deepdraw_test::check_true(name + "a foreign stream is rejected",
+                              foreign_rejected);
+  }
 } // namespace
 
 int
 main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const auto                       forming_problem
-    = forming_test::run_from_text(prm_text, "state-test-output");
-  // This model has no tools: the contact history is given values here so
-  // that its serialisation is checked too (the contact runs are checked end
-  // to end by kill_and_resume_test.py).
-  state::SimulationState state = forming_problem->access().state();
-  state.contact.pair_open      = {1, 0, 1};
-  state.contact.pair_status    = {0, 2, 3};
-  state.contact.tool_position  = {0.5, -1.25};
-  // And the refinement cycles of an adaptive run (D84).
-  state.refinements = {{{0, 3, 7}, {1, 12, 4}}, {}, {{2, 5, 3}}};
-
-  // The state is not trivial (else the comparison proves little).
-  double largest_plastic_strain = 0., largest_enhanced = 0., axes_turn = 0.;
-  for (const auto &point : state.history)
-  {
-    largest_plastic_strain
-      = std::max(largest_plastic_strain, point.state.equivalent_plastic_strain);
-    axes_turn = std::max(axes_turn, std::abs(point.material_axes[0][2]));
-  }
-  for (const auto &cell : state.enhanced_parameters)
-    for (const double value : cell.values)
-      largest_enhanced = std::max(largest_enhanced, std::abs(value));
-  deepdraw_test::check_true("plastic points (epbar "
-                              + std::to_string(largest_plastic_strain) + ")",
-                            largest_plastic_strain > 1e-3);
-  deepdraw_test::check_true("enhanced parameters are not zero",
-                            largest_enhanced > 0.);
-  deepdraw_test::check_true("material axes turned", axes_turn > 1e-4);
-  deepdraw_test::check_true("three increments, load 0.3",
-                            state.increment_number == 3
-                              && std::abs(state.load - 0.3) < 1e-12);
-  deepdraw_test::check_true("next increment 0.1 (Maximum increment)",
-                            std::abs(state.next_increment - 0.1) < 1e-15);
-
-  std::stringstream stream;
-  state.write(stream);
-  const std::string      image = stream.str();
-  state::SimulationState copy;
-  std::istringstream     input(image);
-  copy.read(input);
-
-  bool vertices_same = copy.vertices.size() == state.vertices.size();
-  for (unsigned int v = 0; vertices_same && v < state.vertices.size(); ++v)
-    vertices_same = copy.vertices[v] == state.vertices[v];
-  bool history_same = copy.history.size() == state.history.size();
-  for (unsigned int q = 0; history_same && q < state.history.size(); ++q)
-    history_same
-      = copy.history[q].state.stress == state.history[q].state.stress
-        && copy.history[q].state.back_stress
-             == state.history[q].state.back_stress
-        && copy.history[q].state.equivalent_plastic_strain
-             == state.history[q].state.equivalent_plastic_strain
-        && copy.history[q].material_axes == state.history[q].material_axes;
-  bool enhanced_same
-    = copy.enhanced_parameters.size() == state.enhanced_parameters.size();
-  for (unsigned int c = 0;
-       enhanced_same && c < state.enhanced_parameters.size();
-       ++c)
-    enhanced_same = copy.enhanced_parameters[c].values
-                      == state.enhanced_parameters[c].values
-                    && copy.enhanced_parameters[c].sensitivity
-                         == state.enhanced_parameters[c].sensitivity
-                    && copy.enhanced_parameters[c].evaluated_at
-                         == state.enhanced_parameters[c].evaluated_at
-                    && copy.enhanced_parameters[c].correction
-                         == state.enhanced_parameters[c].correction;
-  deepdraw_test::check_true("load, step, increment",
-                            copy.load == state.load
-                              && copy.last_load_increment
-                                   == state.last_load_increment
-                              && copy.increment_number == state.increment_number
-                              && copy.next_increment == state.next_increment);
-  deepdraw_test::check_true("contact history",
-                            copy.contact.pair_open == state.contact.pair_open
-                              && copy.contact.pair_status
-                                   == state.contact.pair_status
-                              && copy.contact.tool_position
-                                   == state.contact.tool_position);
-  deepdraw_test::check_true("refinement cycles",
-                            copy.refinements == state.refinements);
-  deepdraw_test::check_true("vertices", vertices_same);
-  deepdraw_test::check_true(
-    "total displacement, Newton unknowns",
-    same(copy.total_displacement, state.total_displacement)
-      && same(copy.converged_solution, state.converged_solution)
-      && same(copy.previous_converged_solution,
-              state.previous_converged_solution));
-  deepdraw_test::check_true("quadrature-point history", history_same);
-  deepdraw_test::check_true("enhanced parameters", enhanced_same);
-
-  // Cut short anywhere: rejected.
-  bool truncated_rejected = true;
-  for (const std::size_t length :
-       {std::size_t(0), std::size_t(10), image.size() / 2, image.size() - 1})
-  {
-    std::istringstream     cut(image.substr(0, length));
-    state::SimulationState target;
-    try
-    {
-      target.read(cut);
-      truncated_rejected = false;
-    }
-    catch (const std::runtime_error &)
-    {
-    }
-  }
-  deepdraw_test::check_true("a stream cut short is rejected",
-                            truncated_rejected);
-  std::istringstream     foreign("this is not a state, only text......");
-  state::SimulationState target;
-  bool                   foreign_rejected = false;
-  try
-  {
-    target.read(foreign);
-  }
-  catch (const std::runtime_error &)
-  {
-    foreign_rejected = true;
-  }
-  deepdraw_test::check_true("a foreign stream is rejected", foreign_rejected);
+  round_trip(2);
+  round_trip(4);
   return deepdraw_test::summary();
 }

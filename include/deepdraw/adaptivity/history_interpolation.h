@@ -32,14 +32,16 @@ namespace deepdraw
     Tensor<2, 3>
     nearest_rotation(const Tensor<2, 3> &A);
 
-    // Weights of the parent's points q < 8 of `quadrature` (the 2 x 2 x 2
-    // Gauss points of fe::selective_reduced_quadrature, whose 9th point,
-    // the centre, carries no history) in the trilinear interpolation at xi.
+    // Weights of the parent's weighted points of `quadrature` (the 2 x 2 x n
+    // Gauss points of fe::selective_reduced_quadrature, whose last point,
+    // the centre, carries no history) in the interpolation at xi that is
+    // linear in each direction between the two coordinates of the rule
+    // bracketing xi (trilinear for n = 2).
     std::vector<double>
     trilinear_weights(const Quadrature<3> &quadrature, const Point<3> &xi);
 
     // The history at xi (unit cell of the parent) from the parent's points
-    // `parent` (8, in the order of `quadrature`). material: for the return
+    // `parent` (in the order of `quadrature`). material: for the return
     // to the yield surface (required).
     fe::QuadraturePointHistory
     interpolate_history(const fe::QuadraturePointHistory *parent,

@@ -32,9 +32,12 @@ namespace deepdraw
     public:
       SheetDiscretisation();
 
-      // The blank's mesh (blank::BlankGeometry::create_mesh) and its dofs.
+      // The blank's mesh (blank::BlankGeometry::create_mesh) and its dofs;
+      // the cells integrated with points_through_thickness Gauss points
+      // through the thickness (fe::selective_reduced_quadrature).
       void
-      create(const blank::BlankGeometry &geometry);
+      create(const blank::BlankGeometry &geometry,
+             unsigned int                points_through_thickness);
       // The dofs of the current mesh (after create() or a refinement): the
       // hanging-node constraints, the dofs of every vertex, the faces, and
       // the cell geometry.
@@ -104,6 +107,12 @@ namespace deepdraw
       // index; recomputed whenever the vertices move.
       const std::vector<fe::CellGeometry> &
       cell_geometry() const;
+      // The cells' quadrature (its weighted points, then the centre) and
+      // its number of weighted points: a cell's points in the state.
+      const Quadrature<3> &
+      quadrature() const;
+      unsigned int
+      n_points_per_cell() const;
       // Volume of the sheet on x_t (mm³).
       double
       volume() const;
@@ -129,6 +138,7 @@ namespace deepdraw
       std::vector<std::vector<unsigned int>>              free_face_vertices;
       AffineConstraints<double>                           hanging_nodes;
       std::vector<fe::CellGeometry>                       geometry_of_cells;
+      Quadrature<3>                                       cell_quadrature;
       double                                              element_size = 1.;
       // After adaptive refinement: for every vertex, the blank's vertices
       // it is interpolated from (empty before the first refinement).

@@ -35,9 +35,11 @@ namespace deepdraw
     bool
     uses_mean_dilatation(ElementTechnology technology);
 
-    // Enhanced (element-internal) parameters per cell: 9 or 0.
+    // Enhanced (element-internal) parameters per cell: 9, 12 or 15 with
+    // 2, 3 or 4 points through the thickness (D202), or 0.
     unsigned int
-    n_enhanced_parameters(ElementTechnology technology);
+    n_enhanced_parameters(ElementTechnology technology,
+                          unsigned int      points_through_thickness);
 
     struct ElementParameters
     {
@@ -52,6 +54,9 @@ namespace deepdraw
       // once every element meets the tolerance (true); or the attempt is
       // cut back (false, the default, D189).
       bool iterate_enhanced_globally = false;
+      // Gauss points through the thickness (reference z), 2 x 2 in the
+      // plane (fe::selective_reduced_quadrature, D202).
+      unsigned int points_through_thickness = 2;
 
       // Entries of `subsection Finite element` (the caller enters it).
       static void

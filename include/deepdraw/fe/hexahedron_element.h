@@ -26,8 +26,10 @@ namespace deepdraw
   {
     using namespace dealii;
 
-    constexpr unsigned int dofs_per_cell    = 24;
-    constexpr unsigned int max_enhanced     = 9;
+    constexpr unsigned int dofs_per_cell = 24;
+    // Nine parameters of the three Wilson-Taylor modes, three more for
+    // each through-thickness mode (D202).
+    constexpr unsigned int max_enhanced     = 3 * max_modes;
     constexpr unsigned int max_element_size = dofs_per_cell + max_enhanced;
 
     // The element-internal unknowns of one cell: part of the history
