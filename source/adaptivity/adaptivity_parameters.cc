@@ -133,8 +133,10 @@ namespace deepdraw
                         "How the Gauss points of a refined cell get their "
                         "history: 'nearest' the state of the parent's "
                         "nearest Gauss point (D57), 'interpolated' the "
-                        "trilinear interpolation of the parent's 8 points, "
-                        "returned to the yield surface (D88).");
+                        "interpolation of the parent's points, linear "
+                        "between them along each direction (trilinear with "
+                        "2 points through the thickness), returned to the "
+                        "yield surface (D88, D202).");
       prm.leave_subsection();
     }
 
