@@ -27,7 +27,7 @@ namespace deepdraw
 
 
     std::vector<double>
-    trilinear_weights(const Quadrature<3> &quadrature, const Point<3> &xi)
+    interpolation_weights(const Quadrature<3> &quadrature, const Point<3> &xi)
     {
       // Per direction, linear between the two of the rule's coordinates
       // that bracket xi (the outer two beyond them); the weighted points
@@ -64,7 +64,7 @@ namespace deepdraw
                         const Point<3>                   &xi,
                         const material::ElastoPlasticity &material)
     {
-      const std::vector<double>  w = trilinear_weights(quadrature, xi);
+      const std::vector<double>  w = interpolation_weights(quadrature, xi);
       fe::QuadraturePointHistory result;
       result.state.stress                    = 0;
       result.state.back_stress               = 0;

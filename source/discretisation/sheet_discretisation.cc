@@ -209,13 +209,6 @@ namespace deepdraw
     }
 
 
-    const Quadrature<3> &
-    SheetDiscretisation::quadrature() const
-    {
-      return cell_quadrature;
-    }
-
-
     unsigned int
     SheetDiscretisation::n_points_per_cell() const
     {

@@ -38,7 +38,7 @@ namespace deepdraw
     // linear in each direction between the two coordinates of the rule
     // bracketing xi (trilinear for n = 2).
     std::vector<double>
-    trilinear_weights(const Quadrature<3> &quadrature, const Point<3> &xi);
+    interpolation_weights(const Quadrature<3> &quadrature, const Point<3> &xi);
 
     // The history at xi (unit cell of the parent) from the parent's points
     // `parent` (in the order of `quadrature`). material: for the return

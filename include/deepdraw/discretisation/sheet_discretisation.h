@@ -107,10 +107,8 @@ namespace deepdraw
       // index; recomputed whenever the vertices move.
       const std::vector<fe::CellGeometry> &
       cell_geometry() const;
-      // The cells' quadrature (its weighted points, then the centre) and
-      // its number of weighted points: a cell's points in the state.
-      const Quadrature<3> &
-      quadrature() const;
+      // The weighted points of the cells' quadrature: a cell's points in
+      // the state.
       unsigned int
       n_points_per_cell() const;
       // Volume of the sheet on x_t (mm³).

@@ -28,8 +28,9 @@ namespace deepdraw
       // volumetric gradient of the mean dilatation.
       std::array<Tensor<1, 3>, 8> mean_gradient;
       // Gradients of the incompatible modes at the Gauss points,
-      // [q * max_modes + m]: (j0 / j) J0^{-T} xi_m e_m (Taylor's form; their
-      // volume integral vanishes, so constant stress gives no enhanced force).
+      // [q * max_modes + m]: (j0 / j) J0^{-T} xi_m e_m (Taylor's form), then
+      // the through-thickness modes' (j0 / j) J0^{-T} P(xi_z) e_z; their
+      // volume integrals vanish, so constant stress gives no enhanced force.
       std::vector<Tensor<1, 3>> mode_gradient;
       // One per weighted Gauss point (8, 12 or 16, D202).
       std::vector<double> JxW;
