@@ -14,7 +14,6 @@ namespace deepdraw
       // grad N_a exactly on a trilinear cell, and so does 2x2xn.
       const unsigned int n_points
         = n_weighted_points(fe_values.get_quadrature());
-      geometry.n_points = n_points;
       geometry.gradient.resize(8 * n_points);
       geometry.mode_gradient.resize(max_modes * n_points);
       geometry.JxW.resize(n_points);

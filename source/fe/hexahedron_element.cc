@@ -62,7 +62,7 @@ namespace deepdraw
 
       std::fill(residual, residual + n, 0.);
       Tensor<2, 3> P;
-      for (unsigned int q = 0; q < geometry.n_points; ++q)
+      for (unsigned int q = 0; q < geometry.n_points(); ++q)
       {
         const Tensor<1, 3> *g       = &geometry.gradient[q * 8];
         const Tensor<1, 3> *g_modes = &geometry.mode_gradient[q * max_modes];
@@ -195,7 +195,7 @@ namespace deepdraw
         component[dofs_per_cell + k] = k % 3;
         beta[dofs_per_cell + k]      = 0.;
       }
-      for (unsigned int q = 0; q < geometry.n_points; ++q)
+      for (unsigned int q = 0; q < geometry.n_points(); ++q)
       {
         const Tensor<1, 3> *g       = &geometry.gradient[q * 8];
         const Tensor<1, 3> *g_modes = &geometry.mode_gradient[q * max_modes];
@@ -338,9 +338,9 @@ namespace deepdraw
       double old_force_scale = 0.;
       {
         double volume = 0.;
-        for (unsigned int q = 0; q < geometry.n_points; ++q)
+        for (unsigned int q = 0; q < geometry.n_points(); ++q)
           volume += geometry.JxW[q];
-        for (unsigned int q = 0; q < geometry.n_points; ++q)
+        for (unsigned int q = 0; q < geometry.n_points(); ++q)
           old_force_scale
             = std::max(old_force_scale, old_history[q].state.stress.norm());
         old_force_scale *= 1e-8 * std::pow(volume, 2. / 3.);

@@ -36,7 +36,8 @@ namespace deepdraw
         throw std::logic_error("no selective reduced rule has "
                                + std::to_string(points_per_cell)
                                + " points per cell");
-      return selective_reduced_quadrature(points_per_cell / 4);
+      return selective_reduced_quadrature(
+        points_through_thickness(points_per_cell));
     }
   } // namespace fe
 } // namespace deepdraw

@@ -68,8 +68,9 @@ namespace deepdraw
         double cell_du[fe::dofs_per_cell];
         for (unsigned int i = 0; i < fe::dofs_per_cell; ++i)
           cell_du[i] = du[copy.dofs[i]];
-        const unsigned int first_point = index * cell_geometry[index].n_points;
-        unsigned int       cell_plastic_points = 0;
+        const unsigned int first_point
+          = index * cell_geometry[index].n_points();
+        unsigned int            cell_plastic_points = 0;
         const fe::ElementStatus status
           = element.evaluate(cell_geometry[index],
                              cell_du,

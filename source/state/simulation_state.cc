@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <deepdraw/fe/selective_reduced_quadrature.h>
 #include <deepdraw/io/binary_stream.h>
 #include <deepdraw/io/printable_text.h>
 #include <deepdraw/state/simulation_state.h>
@@ -275,13 +276,14 @@ namespace deepdraw
     SimulationState::write(std::ostream &stream) const
     {
       // The enhanced parameters per cell follow from the points per cell
-      // (4 per point through the thickness, D202).
+      // (D202).
       const unsigned int n_enhanced
         = enhanced_parameters.empty()
             ? 9
             : fe::n_enhanced_parameters(
               fe::ElementTechnology::incompatible_modes,
-              history.size() / enhanced_parameters.size() / 4);
+              fe::points_through_thickness(history.size()
+                                           / enhanced_parameters.size()));
       const bool thickness_modes = n_enhanced > 9;
       stream.write(thickness_modes ? tag_with_thickness_modes : tag,
                    sizeof(tag));

@@ -34,7 +34,12 @@ namespace deepdraw
       std::vector<Tensor<1, 3>> mode_gradient;
       // One per weighted Gauss point (8, 12 or 16, D202).
       std::vector<double> JxW;
-      unsigned int        n_points = 0;
+
+      unsigned int
+      n_points() const
+      {
+        return JxW.size();
+      }
     };
 
     // fe_values: a scalar FE_Q(1) on the selective reduced quadrature

@@ -34,8 +34,16 @@ namespace deepdraw
       return quadrature.size() - 1;
     }
 
+    // The points through the thickness of a rule with points_per_cell
+    // weighted points (4 per point through the thickness).
+    inline unsigned int
+    points_through_thickness(const unsigned int points_per_cell)
+    {
+      return points_per_cell / 4;
+    }
+
     // The rule whose cells carry points_per_cell weighted points (a state's
-    // history: 4 per point through the thickness). Throws if none does.
+    // history). Throws if none does.
     Quadrature<3>
     quadrature_with_weighted_points(unsigned int points_per_cell);
   } // namespace fe
