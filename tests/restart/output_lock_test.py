@@ -52,6 +52,26 @@ def wait_for_rows(process, output, n):
         time.sleep(0.002)
 
 
+def wait_until_stopped(pid):
+    """Waits until every thread of process pid is stopped: SIGSTOP is
+    delivered asynchronously, and a snapshot taken before the stop would see
+    the run still writing (the failure of a loaded CI machine)."""
+    deadline = time.time() + 60
+    tasks = pathlib.Path("/proc/%d/task" % pid)
+    while time.time() < deadline:
+        states = []
+        for task in tasks.iterdir():
+            try:
+                stat = (task / "stat").read_text()
+            except FileNotFoundError:
+                continue
+            states.append(stat[stat.rindex(")") + 2])
+        if states and all(state in "Tt" for state in states):
+            return
+        time.sleep(0.002)
+    sys.exit("FAILED: the run did not stop on SIGSTOP within 60 s")
+
+
 def stop_with(args, work, output, signal_number, name, failures):
     """Starts a run, signals it after 3 increments; checks its end."""
     process = start(args, work, output)
@@ -83,6 +103,7 @@ def main():
     wait_for_rows(process, busy, 2)
     # Held still (the lock stays held) while the other runs try.
     process.send_signal(signal.SIGSTOP)
+    wait_until_stopped(process.pid)
     if not (busy / LOCK).exists():
         failures.append("no lock file in a living run's folder")
     for extra in ((), ("--resume",)):
