@@ -29,7 +29,11 @@ Expectations, independent of the program's own numbers:
 import re
 import shutil
 
-from mpirun_tools import SHORT_CUP, newton_path, run, script_test
+from mpirun_tools import SHORT_CUP, newton_path, read_vtu, run, script_test
+
+# The square cup's punch is 70 mm wide: a closed pair of the top surface
+# beyond 40 mm of its axis is the holder's.
+HOLDER_FROM = 40.
 
 CUT_Z = """include {base}
 subsection Adaptivity
@@ -83,6 +87,47 @@ def check_pieces(failures, serial, parallel, ranks):
     print(f"{parallel.name}: {len(records)} .pvtu records of {ranks} pieces")
 
 
+def ranks_of_points(directory, record):
+    """{point (rounded to 1e-6 mm): set of ranks whose piece holds it} and
+    {point: (contact_status, z)} of the pieces of a .pvtu record."""
+    ranks, contact = {}, {}
+    pieces = re.findall(r'Piece Source="([^"]+)"', record.read_text())
+    for rank, piece in enumerate(pieces):
+        points, fields = read_vtu(directory / piece)
+        for point, status in zip(points, fields["contact_status"]):
+            key = tuple(round(c, 6) for c in point)
+            ranks.setdefault(key, set()).add(rank)
+            contact[key] = status
+    return ranks, contact
+
+
+def check_partition(failures, parallel, ranks, holder_from):
+    """Contact across the partition (issue 29): at the last output step,
+    closed contact pairs (contact_status 1 or 2) at nodes shared by cells
+    of two ranks, and the holder's closed pairs (top-surface nodes beyond
+    holder_from mm of the punch axis, where the punch, 35 mm wide, cannot
+    touch) at nodes of several ranks' cells. The runs' tables are compared
+    with the one-rank run in compare(); here it is shown that the cases the
+    issue names occur in them."""
+    record = sorted(parallel.glob("solution-*.pvtu"))[-1]
+    owners, status = ranks_of_points(parallel, record)
+    closed = [p for p, s in status.items() if s > 0]
+    on_boundary = [p for p in closed if len(owners[p]) > 1]
+    holder = [p for p in closed
+              if p[2] > 0.5 and max(abs(p[0]), abs(p[1])) > holder_from]
+    holder_ranks = set().union(*(owners[p] for p in holder)) if holder \
+        else set()
+    print(f"{parallel.name} ({record.name}): {len(closed)} closed pairs, "
+          f"{len(on_boundary)} at nodes of two ranks' cells; the holder's "
+          f"{len(holder)} on ranks {sorted(holder_ranks)}")
+    if not on_boundary:
+        failures.append(f"{parallel.name}: no closed pair on the partition "
+                        "boundary")
+    if len(holder_ranks) < 2:
+        failures.append(f"{parallel.name}: the holder's pairs on ranks "
+                        f"{sorted(holder_ranks)} only")
+
+
 def must_run(failures, ranks, args, work, *arguments):
     code, _ = run(ranks, args.deepdraw, work, *arguments)
     if code != 0:
@@ -102,6 +147,7 @@ def main():
     compare(failures, work / "one", work / "three", "3 ranks against 1")
     check_pieces(failures, work / "one", work / "two", 2)
     check_pieces(failures, work / "one", work / "three", 3)
+    check_partition(failures, work / "three", 3, HOLDER_FROM)
 
     (work / "cut_z.prm").write_text(CUT_Z.format(base=SHORT_CUP))
     for ranks, name in ((0, "cut_z_one"), (2, "cut_z_two")):
