@@ -14,6 +14,10 @@ waiting.
   1e-8 (ranks_agree_test's bound).
 - SIGTERM to one rank only (as a batch system may send it): the ranks stop
   at the same increment and every rank ends with 3.
+- SIGKILL to rank 1, then to rank 0, of a running 2-rank job: mpirun ends
+  the job (measured: exit code 137 within 2 s), every table ends with a
+  whole row, and --resume on 2 ranks from what is on disk ends with the
+  uninterrupted 2-rank run's tables within 1e-8.
 - A failure of rank 0 alone in the middle of the run (a VTU file it cannot
   write; only rank 0 writes): its reason once, exit code 3 within the
   ranks' patience (60 s), the tables on disk end with whole rows at 0.9 or
@@ -21,8 +25,11 @@ waiting.
 
     rank_failures_test.py --deepdraw EXE --source-dir REPO --work-dir DIR
 """
+import os
+import pathlib
 import signal
 import subprocess
+import sys
 import time
 
 from mpirun_tools import SHORT_CUP, run, script_test, start
@@ -136,9 +143,68 @@ def signal_and_resume(failures, args, work):
                                          relative=1e-8)
 
 
-def whole_rows(path):
-    text = path.read_text()
-    return text.endswith("\n")
+def rank_process(pattern, rank):
+    """The process id of a rank: of the processes whose command line
+    matches pattern (mpirun's begins with its own name, not deepdraw's), the
+    one Open MPI gave OMPI_COMM_WORLD_RANK=rank."""
+    listed = subprocess.run(["pgrep", "-f", pattern], capture_output=True,
+                            text=True).stdout.split()
+    for pid in map(int, listed):
+        try:
+            environment = pathlib.Path(f"/proc/{pid}/environ").read_bytes()
+        except OSError:
+            continue
+        if f"OMPI_COMM_WORLD_RANK={rank}".encode() in environment.split(b"\0"):
+            return pid
+    sys.exit(f"FAILED: no process of rank {rank} among {listed}")
+
+
+def killed_rank(failures, args, work, victim):
+    """SIGKILL to one rank (victim: 'rank 0' or 'rank 1') of a 2-rank run
+    of finer.prm: the job ends without hanging, every table on disk ends
+    with a whole row, and --resume on 2 ranks from what is on disk (the
+    checkpoint of the last whole increment and the stale lock left by a
+    killed rank 0) ends with the uninterrupted run's tables within 1e-8."""
+    output = "killed_" + victim.replace(" ", "_")
+    process = start(2, args.deepdraw, work, "finer.prm",
+                    "--output-directory", output)
+    statistics = work / output / "statistics.csv"
+    deadline = time.time() + 300
+    while not statistics.exists() or \
+            len(statistics.read_text().splitlines()) < 5:
+        if process.poll() is not None or time.time() > deadline:
+            failures.append(f"SIGKILL to {victim}: the run ended or hung "
+                            "before the signal")
+            return
+        time.sleep(0.01)
+    pattern = "^[^ ]*deepdraw finer.prm --output-directory " + output
+    os.kill(rank_process(pattern, int(victim.split()[-1])), signal.SIGKILL)
+    began = time.time()
+    try:
+        printed, _ = process.communicate(timeout=120)
+    except subprocess.TimeoutExpired:
+        process.kill()
+        subprocess.run(["pkill", "-KILL", "-f", pattern])
+        failures.append(f"SIGKILL to {victim}: the job hung")
+        return
+    print(printed[-800:])
+    print(f"SIGKILL to {victim}: mpirun exit code {process.returncode} "
+          f"after {time.time() - began:.1f} s")
+    if process.returncode == 0:
+        failures.append(f"SIGKILL to {victim}: exit code 0")
+    for table in (work / output).glob("*.csv"):
+        if not table.read_text().endswith("\n"):
+            failures.append(f"SIGKILL to {victim}: {table.name} does not "
+                            "end with a whole row")
+    code, _ = run(2, args.deepdraw, work, "finer.prm", "--output-directory",
+                  output, "--resume", "--quiet")
+    if code != 0:
+        failures.append(f"SIGKILL to {victim}: the resume ended with {code}")
+        return
+    failures += script_test.close_tables(
+        work / "whole", work / output,
+        f"the uninterrupted 2-rank run, after SIGKILL to {victim}",
+        relative=1e-8)
 
 
 def rank_zero_alone(failures, args, work):
@@ -172,6 +238,8 @@ def main():
     failures = []
     input_errors(failures, args, work)
     signal_and_resume(failures, args, work)
+    killed_rank(failures, args, work, "rank 1")
+    killed_rank(failures, args, work, "rank 0")
     rank_zero_alone(failures, args, work)
     script_test.finish(failures)
 
