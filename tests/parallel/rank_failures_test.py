@@ -89,6 +89,24 @@ def input_errors(failures, args, work):
          "deepdraw: error in the input:", code, 2)
 
 
+def wait_for_lines(process, path, n):
+    """Waits until the table at path has n lines; False if the process
+    ended first or 300 s passed."""
+    deadline = time.time() + 300
+    while not path.exists() or len(path.read_text().splitlines()) < n:
+        if process.poll() is not None or time.time() > deadline:
+            return False
+        time.sleep(0.01)
+    return True
+
+
+def tables_end_whole(failures, directory, what):
+    for table in directory.glob("*.csv"):
+        if not table.read_text().endswith("\n"):
+            failures.append(f"{what}: {table.name} does not end with a whole "
+                            "row")
+
+
 def signal_and_resume(failures, args, work):
     (work / "finer.prm").write_text(FINER.format(base=SHORT_CUP))
     code, _ = run(2, args.deepdraw, work, "finer.prm", "--output-directory",
@@ -99,13 +117,9 @@ def signal_and_resume(failures, args, work):
     process = start(2, args.deepdraw, work, "finer.prm",
                     "--output-directory", "stopped")
     statistics = work / "stopped" / "statistics.csv"
-    deadline = time.time() + 300
-    while not statistics.exists() or \
-            len(statistics.read_text().splitlines()) < 5:
-        if process.poll() is not None or time.time() > deadline:
-            failures.append("the run to be stopped ended or hung")
-            return
-        time.sleep(0.01)
+    if not wait_for_lines(process, statistics, 5):
+        failures.append("the run to be stopped ended or hung")
+        return
     process.send_signal(signal.SIGTERM)
     printed, _ = process.communicate(timeout=120)
     print(printed[-1500:])
@@ -117,14 +131,11 @@ def signal_and_resume(failures, args, work):
     process = start(2, args.deepdraw, work, "finer.prm",
                     "--output-directory", "stopped", "--resume")
     stopped_at = len(statistics.read_text().splitlines())
-    deadline = time.time() + 300
     # One increment after the resume, six before the end: time enough for
     # the signal to arrive before the last increment.
-    while len(statistics.read_text().splitlines()) < stopped_at + 1:
-        if process.poll() is not None or time.time() > deadline:
-            failures.append("the resumed run to be stopped ended or hung")
-            return
-        time.sleep(0.01)
+    if not wait_for_lines(process, statistics, stopped_at + 1):
+        failures.append("the resumed run to be stopped ended or hung")
+        return
     # The newest of the ranks (not mpirun, whose command line begins with
     # its own name).
     subprocess.run(["pkill", "-TERM", "-n", "-f",
@@ -168,15 +179,10 @@ def killed_rank(failures, args, work, victim):
     output = "killed_" + victim.replace(" ", "_")
     process = start(2, args.deepdraw, work, "finer.prm",
                     "--output-directory", output)
-    statistics = work / output / "statistics.csv"
-    deadline = time.time() + 300
-    while not statistics.exists() or \
-            len(statistics.read_text().splitlines()) < 5:
-        if process.poll() is not None or time.time() > deadline:
-            failures.append(f"SIGKILL to {victim}: the run ended or hung "
-                            "before the signal")
-            return
-        time.sleep(0.01)
+    if not wait_for_lines(process, work / output / "statistics.csv", 5):
+        failures.append(f"SIGKILL to {victim}: the run ended or hung "
+                        "before the signal")
+        return
     pattern = "^[^ ]*deepdraw finer.prm --output-directory " + output
     os.kill(rank_process(pattern, int(victim.split()[-1])), signal.SIGKILL)
     began = time.time()
@@ -192,10 +198,7 @@ def killed_rank(failures, args, work, victim):
           f"after {time.time() - began:.1f} s")
     if process.returncode == 0:
         failures.append(f"SIGKILL to {victim}: exit code 0")
-    for table in (work / output).glob("*.csv"):
-        if not table.read_text().endswith("\n"):
-            failures.append(f"SIGKILL to {victim}: {table.name} does not "
-                            "end with a whole row")
+    tables_end_whole(failures, work / output, f"SIGKILL to {victim}")
     code, _ = run(2, args.deepdraw, work, "finer.prm", "--output-directory",
                   output, "--resume", "--quiet")
     if code != 0:
@@ -228,9 +231,7 @@ def rank_zero_alone(failures, args, work):
     if last is None or not 0.9 - 1e-9 <= last <= 1.0 + 1e-9:
         failures.append(f"punch_force.csv ends at {last}, expected 0.9 or "
                         "1.0 mm")
-    for table in (work / "blocked").glob("*.csv"):
-        if not table.read_text().endswith("\n"):
-            failures.append(f"{table.name} does not end with a whole row")
+    tables_end_whole(failures, work / "blocked", "rank 0 failing alone")
 
 
 def main():

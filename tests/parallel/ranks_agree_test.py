@@ -89,7 +89,7 @@ def check_pieces(failures, serial, parallel, ranks):
 
 def ranks_of_points(directory, record):
     """{point (rounded to 1e-6 mm): set of ranks whose piece holds it} and
-    {point: (contact_status, z)} of the pieces of a .pvtu record."""
+    {point: its contact_status} of the pieces of a .pvtu record."""
     ranks, contact = {}, {}
     pieces = re.findall(r'Piece Source="([^"]+)"', record.read_text())
     for rank, piece in enumerate(pieces):
@@ -105,7 +105,7 @@ def check_partition(failures, parallel, ranks, holder_from):
     """Contact across the partition (issue 29): at the last output step,
     closed contact pairs (contact_status 1 or 2) at nodes shared by cells
     of two ranks, and the holder's closed pairs (top-surface nodes beyond
-    holder_from mm of the punch axis, where the punch, 35 mm wide, cannot
+    holder_from mm of the punch axis, where the punch, 35 mm from it, cannot
     touch) at nodes of several ranks' cells. The runs' tables are compared
     with the one-rank run in compare(); here it is shown that the cases the
     issue names occur in them."""
