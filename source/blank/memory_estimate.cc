@@ -20,6 +20,11 @@ namespace deepdraw
       constexpr double bytes_of_program = 170e6;
       constexpr double bytes_per_cell   = 48e3;
       constexpr double bytes_per_pair   = 19e3;
+      // Per cell and point through the thickness beyond 2 (D202: 4 more
+      // quadrature points' history and geometry, 3 more enhanced
+      // parameters): the square cup's peak, 50 x 50 and 100 x 100 x 2
+      // with 2, 3 and 4 points, grew by 2.84-2.96 kB a cell and point (D203).
+      constexpr double bytes_per_cell_and_extra_point = 2.9e3;
 
       // A number from a file such as /sys/fs/cgroup/memory.max; negative
       // if it cannot be read or says "max".
@@ -43,10 +48,16 @@ namespace deepdraw
 
 
     double
-    estimated_memory(const BlankGeometry &geometry, const unsigned int n_tools)
+    estimated_memory(const BlankGeometry &geometry,
+                     const unsigned int   n_tools,
+                     const unsigned int   points_through_thickness)
     {
       const double nodes_per_face = geometry.n_plane_vertices();
-      return bytes_of_program + bytes_per_cell * geometry.n_cells()
+      const double extra_points
+        = points_through_thickness > 2 ? points_through_thickness - 2. : 0.;
+      return bytes_of_program
+             + (bytes_per_cell + bytes_per_cell_and_extra_point * extra_points)
+                 * geometry.n_cells()
              + bytes_per_pair * n_tools * nodes_per_face;
     }
 
@@ -71,9 +82,12 @@ namespace deepdraw
 
 
     void
-    check_memory(const BlankGeometry &geometry, const unsigned int n_tools)
+    check_memory(const BlankGeometry &geometry,
+                 const unsigned int   n_tools,
+                 const unsigned int   points_through_thickness)
     {
-      const double needed    = estimated_memory(geometry, n_tools);
+      const double needed
+        = estimated_memory(geometry, n_tools, points_through_thickness);
       const double available = available_memory();
       if (needed <= available)
         return;
@@ -88,11 +102,17 @@ namespace deepdraw
            << " cells";
       if (n_tools > 0)
         text << " with " << n_tools << " tool(s)";
+      if (points_through_thickness > 2)
+        text << " and " << points_through_thickness
+             << " points through the thickness";
       text << " needs about " << needed / 1e9
            << " GB of memory (estimated from measured runs), more than the "
            << available / 1e9
            << " GB available; use fewer Elements along x, Elements along y "
-              "or Layers through thickness";
+              "or Layers through thickness"
+           << (points_through_thickness > 2
+                 ? ", or Finite element/Points through the thickness"
+                 : "");
       throw InputError(text.str());
     }
   } // namespace blank

@@ -119,7 +119,8 @@ namespace deepdraw
       // The mesh is made only if it fits into the memory (D53).
       blank::check_memory(geometry,
                           contact.active() ? contact.tool_definitions().size()
-                                           : 0);
+                                           : 0,
+                          element.points_through_thickness);
     }
   } // namespace problem
 } // namespace deepdraw

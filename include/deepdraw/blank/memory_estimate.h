@@ -15,9 +15,12 @@ namespace deepdraw
     // Bytes a run with UMFPACK needs: the program, and per cell and per
     // contact pair (n_tools pairs per node of a sheet face) what runs of
     // the tension bar and the square cup measured, the factors of the
-    // linear solver included (D53).
+    // linear solver included (D53); per cell more with more than 2
+    // quadrature points through the thickness (D203).
     double
-    estimated_memory(const BlankGeometry &geometry, unsigned int n_tools);
+    estimated_memory(const BlankGeometry &geometry,
+                     unsigned int         n_tools,
+                     unsigned int         points_through_thickness);
 
     // Bytes available to this process: MemAvailable of /proc/meminfo,
     // limited by the cgroup (memory.max - memory.current) where there is
@@ -28,7 +31,9 @@ namespace deepdraw
     // Throws InputError "the mesh of N cells needs about X GB, more than
     // the Y GB available" if estimated_memory > available_memory.
     void
-    check_memory(const BlankGeometry &geometry, unsigned int n_tools);
+    check_memory(const BlankGeometry &geometry,
+                 unsigned int         n_tools,
+                 unsigned int         points_through_thickness);
   } // namespace blank
 } // namespace deepdraw
 
