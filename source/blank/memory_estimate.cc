@@ -22,8 +22,8 @@ namespace deepdraw
       constexpr double bytes_per_pair   = 19e3;
       // Per cell and point through the thickness beyond 2 (D202: 4 more
       // quadrature points' history and geometry, 3 more enhanced
-      // parameters): the square cup's peak, 50 x 50 and 100 x 100 x 2
-      // with 2, 3 and 4 points, grew by 2.84-2.96 kB a cell and point (D203).
+      // parameters): the square cup's peak memory on 50 x 50 x 2 and
+      // 100 x 100 x 2 grew by 2.84-2.96 kB a cell and point (D203).
       constexpr double bytes_per_cell_and_extra_point = 2.9e3;
 
       // A number from a file such as /sys/fs/cgroup/memory.max; negative
