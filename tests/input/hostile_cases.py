@@ -263,8 +263,9 @@ def expression_cases(source):
         dict(name="mesh_too_large_for_the_memory",
              files=cup(sub("Geometry", "Elements along x", "100000")), exit=2,
              messages=["cells with 3 tool(s) needs about", "GB available"]),
-        # The estimate grows with the points through the thickness (D203)
-        # and the message names the parameter that shrinks it.
+        # With more than 2 points through the thickness the message names
+        # them and the parameter that shrinks the estimate (D203; the
+        # estimate's growth itself is the measurement there).
         dict(name="mesh_with_4_points_too_large_for_the_memory",
              files=cup(sub("Geometry", "Elements along x", "100000"),
                        sub("Finite element", "Points through the thickness",
