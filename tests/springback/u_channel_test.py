@@ -8,17 +8,17 @@ Expectations independent of the code:
   the mid-surface has 1 - 0.78 = 0.22 mm of free play across it; over the
   straight part of the wall of this draw (s0 = 40 to 50, 10 mm along the
   wall) it can tilt by at most atan(0.22 / 10) = 1.26 degrees, and theta1
-  and theta2 are 90 degrees within that (measured 89.59 and 89.87; theta1
+  and theta2 are 90 degrees within that (measured 89.63 and 89.89; theta1
   holds also the bottom's bow, its centre 0.09 mm above its end at s0 = 20,
   0.3 degrees);
 - the force release turns the flange down against the wall (the bending
   moment of the die shoulder relaxes; at 70 mm theta2 falls from 90.1 to
   77.8 degrees, doc/results.md): theta2 falls by more than 1 degree
-  (measured 2.56; the bound is a sign with a margin of half the measured
+  (measured 2.57; the bound is a sign with a margin of half the measured
   value, not a value);
 - the release leaves no tool acting (their forces zero at its end) and its
   increments converge (at most 18 Newton iterations each: measured 9 in
-  the first, 1 to 7 in the nine others; the bound is twice the largest).
+  the first, 5 to 7 in the nine others; the bound is twice the largest).
 
 - the same draw released by tool retraction (resumed from the checkpoint
   at the end of the draw; the die 20 mm outwards, the holder 3 mm up, the
@@ -26,15 +26,17 @@ Expectations independent of the code:
   (the run ends with exit 0 only then) and leaves the shape of the force
   release: both methods release the same loaded part, the retraction only
   with the friction of the flange dragged under the lifted holder on top.
-  Measured: theta1 0.001 deg, theta2 0.13 deg, rho 0.3 % apart; asserted
+  Measured: theta1 0.005 deg, theta2 0.13 deg, rho 0.4 % apart; asserted
   0.3 deg and 1 %.
   The law is not robust (the die at 6 mm per unit stops in the punch's
   lift, D198): a failure here on another machine may be the path's
   round-off (D190) before it is a fault.
 The draw has the prm's Contact/Augmentation scaling 0.005: with D156's
-0.05 no retraction law got the part free of the second tool (D197, D198).
-Measured on 2 cores: 41 s for the draw (329 increments with the
-tolerances 1e-4), 1 s for the force release, 5 s for the retraction.
+0.05 no retraction law got the part free of the second tool (D197, D198);
+and the prm's Newton settings (up to 100 iterations, no separate bound on
+the holder's force, D205). Measured on 2 cores: 51 s for the draw and the
+force release (107 + 10 increments with the tolerances 1e-4), 26 s for
+the retraction (123 increments; both beside another run).
 
     u_channel_test.py --deepdraw EXE --source-dir REPO --work-dir DIR
 """
@@ -59,10 +61,10 @@ PARTS = "bottom: 0, 20; wall: 40, 50; flange: 65, 165"
 # The wall's tilt the clearance allows (module docstring): free play
 # 1 - 0.78 mm over the 10 mm of s0 = 40 to 50.
 BEFORE_TOLERANCE = math.degrees(math.atan(0.22 / 10.))
-THETA2_FALL = 1.0          # deg; measured 2.56
+THETA2_FALL = 1.0          # deg; measured 2.57
 RELEASE_ITERATIONS = 18    # per increment; measured at most 9 (twice that)
 ANGLE_AGREEMENT = 0.3      # deg, retraction against force; measured 0.13
-RHO_AGREEMENT = 0.01       # relative; measured 0.003
+RHO_AGREEMENT = 0.01       # relative; measured 0.004
 # The retraction (module docstring): each tool in turn, from the end of the
 # draw at t = STROKE.
 RETRACTION = """subsection Process
