@@ -12,6 +12,8 @@
 # TRAVEL_MM defaults to 8.1, N to "25 50 100 150" (1 250 ... 45 000 cells).
 # SOLVER=AMG (or UMFPACK, KLU) in the environment sets Linear solver/Type
 # (default MUMPS; doc/results.md § Algebraic multigrid).
+# REUSE=true|false|auto sets Linear solver/Reuse factorisation (default
+# auto since D206: on for 50 x 50 and finer; false for the figures before).
 # DEEPDRAW selects the executable (default build/deepdraw). Outputs and
 # wall_time.png go to a fresh temporary directory (printed, kept). The
 # figures are wall-clock times: run it on an otherwise idle machine.
@@ -22,6 +24,7 @@ travel=${1:-8.1}
 [ $# -gt 0 ] && shift
 meshes=${*:-25 50 100 150}
 solver=${SOLVER:-MUMPS}
+reuse=${REUSE:-auto}
 output=$(mktemp -d /tmp/square_cup_meshes.XXXXXX)
 [ -x "$deepdraw" ] || { echo "square_cup_meshes.sh: $deepdraw missing" >&2; exit 1; }
 
@@ -39,6 +42,7 @@ subsection Process
 end
 subsection Linear solver
   set Type = $solver
+  set Reuse factorisation = $reuse
 end
 PRM
   start=$(date +%s.%N)

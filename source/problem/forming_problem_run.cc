@@ -156,10 +156,14 @@ namespace deepdraw
         console.stage(*view);
       }
       std::vector<std::string> summaries = postprocessors.summaries();
-      if (parameters.linear_solver.reuse_factorization)
+      // This process's counts (a resumed run's since its resume); with
+      // `auto` only where a kept factorisation was used (D206).
+      const auto statistics = model->linear_system().statistics();
+      const auto reuse      = parameters.linear_solver.reuse;
+      if (!parameters.linear_solver.iterative()
+          && (reuse == solver::LinearSolverParameters::Reuse::always
+              || statistics.reused_solves > 0))
       {
-        // This process's counts (a resumed run's since its resume).
-        const auto statistics = model->linear_system().statistics();
         summaries.push_back(
           "linear solver: " + std::to_string(statistics.factorizations)
           + " factorisations, " + std::to_string(statistics.reused_solves)
@@ -169,7 +173,6 @@ namespace deepdraw
       }
       if (parameters.linear_solver.iterative())
       {
-        const auto statistics = model->linear_system().statistics();
         summaries.push_back(
           "linear solver: " + std::to_string(statistics.amg_hierarchies)
           + " AMG hierarchies, " + std::to_string(statistics.amg_solves)

@@ -82,9 +82,9 @@ main(int argc, char *argv[])
           decoupled.push_back(n + i);
     const std::string name = bordered ? "bordered" : "whole";
     deepdraw::solver::LinearSolverParameters parameters;
-    parameters.reuse_factorization = true;
-    parameters.forcing_term        = 0.1;
-    parameters.reuse_iterations    = 10;
+    parameters.reuse = deepdraw::solver::LinearSolverParameters::Reuse::always;
+    parameters.forcing_term     = 0.1;
+    parameters.reuse_iterations = 10;
     deepdraw::solver::LinearSolver solver(parameters);
 
     fill(A, 0.);

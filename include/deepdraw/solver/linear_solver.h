@@ -36,8 +36,16 @@ namespace deepdraw
       // the increment's last factorisation as right preconditioner, to the
       // Eisenstat-Walker forcing term (between `smallest_forcing_term` and
       // `forcing_term`); a system that needs more than `reuse_iterations`
-      // is factorised (D185).
-      bool         reuse_factorization   = false;
+      // is factorised (D185). `automatic`: only for systems of at least
+      // `reuse_threshold` unknowns, where it was measured to pay (D206).
+      enum class Reuse
+      {
+        never,
+        always,
+        automatic
+      };
+      Reuse        reuse                 = Reuse::automatic;
+      unsigned int reuse_threshold       = 20000;
       double       forcing_term          = 0.1;
       double       smallest_forcing_term = 0.1;
       unsigned int reuse_iterations      = 10;
@@ -50,6 +58,16 @@ namespace deepdraw
       iterative() const
       {
         return type == "AMG";
+      }
+
+      // Whether a factorised system of n unknowns is solved with the kept
+      // factorisation where it can be.
+      bool
+      reuses_factorization(const std::size_t n) const
+      {
+        return !iterative()
+               && (reuse == Reuse::always
+                   || (reuse == Reuse::automatic && n >= reuse_threshold));
       }
 
       static void
