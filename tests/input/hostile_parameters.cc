@@ -113,6 +113,7 @@ namespace
        {"Linear solver/Forcing term", ""},
        {"Linear solver/Smallest forcing term", ""},
        {"Linear solver/Reuse iterations", ""},
+       {"Linear solver/Reuse threshold", ""},
        {"Linear solver/AMG tolerance", ""},
        {"Linear solver/AMG iterations", ""},
        {"Linear solver/AMG coarse size", ""},
