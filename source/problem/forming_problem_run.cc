@@ -157,12 +157,12 @@ namespace deepdraw
       }
       std::vector<std::string> summaries = postprocessors.summaries();
       // This process's counts (a resumed run's since its resume); with
-      // `auto` only where a kept factorisation was used (D206).
+      // `auto` only where a kept factorisation was used (D206). AMG never
+      // reuses one, and `true` with AMG is refused at input.
       const auto statistics = model->linear_system().statistics();
-      const auto reuse      = parameters.linear_solver.reuse;
-      if (!parameters.linear_solver.iterative()
-          && (reuse == solver::LinearSolverParameters::Reuse::always
-              || statistics.reused_solves > 0))
+      if (parameters.linear_solver.reuse
+            == solver::LinearSolverParameters::Reuse::always
+          || statistics.reused_solves > 0)
       {
         summaries.push_back(
           "linear solver: " + std::to_string(statistics.factorizations)
