@@ -158,7 +158,8 @@ namespace deepdraw
           return status;
       }
 
-      solver::NewtonIncrement newton(parameters);
+      // The stage's Newton settings: subsection Newton with its overrides.
+      solver::NewtonIncrement newton(model.stage().newton);
       const IncrementOutcome  outcome
         = newton.run(*this, newton_unknowns, assembled, iterations);
       newton_progress.keep_residuals(newton);
@@ -315,7 +316,7 @@ namespace deepdraw
         // No stagnation cut (D89): it saves the time of an increment that
         // a cut-back would redo smaller, but a re-equilibration has no
         // smaller step; it may use all of Maximum iterations.
-        solver::NewtonParameters settings = parameters;
+        solver::NewtonParameters settings = model.stage().newton;
         settings.stagnation_iterations    = 0;
         solver::NewtonIncrement newton(settings);
         outcome = newton.run(*this, newton_unknowns, true, iterations);

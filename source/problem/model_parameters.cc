@@ -69,6 +69,7 @@ namespace deepdraw
       stage_defaults.blank_holder_force  = process.blank_holder_force;
       stage_defaults.boundary_conditions = boundary_conditions;
       stage_defaults.load_stepping       = load_stepping;
+      stage_defaults.newton              = newton;
       stage_defaults.symmetry_plane_x    = geometry.symmetry_plane_x;
       stage_defaults.symmetry_plane_y    = geometry.symmetry_plane_y;
       stage_defaults.n_tool_slots        = contact::n_tool_slots;

@@ -67,6 +67,14 @@ namespace deepdraw
                             internal_forces);
       if (stage().releases_forces())
         add_release_loads(constraints_used, load, system->rhs());
+      if (stage().viscous_stabilization != nullptr && load > committed.load)
+        viscous_stabilization.add(discretisation,
+                                  du,
+                                  stage().viscous_coefficient(load),
+                                  load - committed.load,
+                                  constraints_used,
+                                  matrix,
+                                  system->rhs());
       AssemblyResult result;
       result.status           = elements.status;
       result.plastic_points   = elements.plastic_points;

@@ -1,4 +1,6 @@
+#include <cmath>
 #include <deal.II/base/utilities.h>
+#include <deepdraw/io/function_of_load.h>
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/io/printable_text.h>
 #include <deepdraw/process/stage.h>
@@ -72,6 +74,40 @@ namespace deepdraw
       }
 
 
+      // Viscous stabilization (D208): an expression of t, >= 0 over the
+      // stage and 0 at its end, so that the stage ends in equilibrium
+      // without the viscous forces.
+      std::shared_ptr<FunctionParser<1>>
+      parse_viscous_stabilization(ParameterHandler &prm, const Stage &stage)
+      {
+        const std::string text
+          = Utilities::trim(prm.get("Viscous stabilization"));
+        if (text.empty())
+          return nullptr;
+        const std::string parameter
+          = stage.parameter_prefix + "Viscous stabilization";
+        const auto coefficient = io::parse_function_of_load(text, 1, parameter);
+        const std::string start
+          = parameter + " = '" + io::one_line(text) + "' gives ";
+        for (const double t : stage.check_loads())
+        {
+          coefficient->set_time(t);
+          const double value = coefficient->value(Point<1>());
+          if (!std::isfinite(value) || value < 0.)
+            throw InputError(start + number(value) + " at t = " + number(t)
+                             + ": allowed are values >= 0");
+        }
+        coefficient->set_time(stage.end_load);
+        const double last = coefficient->value(Point<1>());
+        if (last != 0.)
+          throw InputError(start + number(last) + " at the stage's end, t = "
+                           + number(stage.end_load)
+                           + ": it must be 0 there, so that the stage ends "
+                             "in equilibrium without viscous forces");
+        return coefficient;
+      }
+
+
       // The entries of one named stage slot (the current subsection).
       Stage
       parse_stage(ParameterHandler    &prm,
@@ -112,6 +148,8 @@ namespace deepdraw
         stage.load_stepping = defaults.load_stepping;
         stage.load_stepping.parse_overrides(prm, prefix);
         stage.load_stepping.final_load = end_load;
+        stage.newton                   = defaults.newton;
+        stage.newton.parse_overrides(prm, prefix);
         for (unsigned int slot = 0; slot < defaults.n_tool_slots; ++slot)
         {
           prm.enter_subsection("Tool " + std::to_string(slot + 1));
@@ -121,6 +159,7 @@ namespace deepdraw
           prm.leave_subsection();
         }
         parse_release(prm, stage);
+        stage.viscous_stabilization = parse_viscous_stabilization(prm, stage);
         return stage;
       }
     } // namespace
@@ -148,6 +187,16 @@ namespace deepdraw
           return "release";
       }
       return "forming";
+    }
+
+
+    double
+    Stage::viscous_coefficient(const double load) const
+    {
+      if (viscous_stabilization == nullptr)
+        return 0.;
+      viscous_stabilization->set_time(load);
+      return viscous_stabilization->value(Point<1>());
     }
 
 
@@ -207,6 +256,18 @@ namespace deepdraw
                           "planes and the Prescribed displacements they must "
                           "stop the 3 translations and 3 rotations of the "
                           "sheet.");
+        prm.declare_entry(
+          "Viscous stabilization",
+          "",
+          Patterns::Anything(),
+          "Empty: none. Otherwise c(t), an expression of t (>= 0, and 0 at "
+          "the stage's end): every free displacement dof carries the force "
+          "c V du/dt against its motion, with V its node's share of the "
+          "sheet's initial volume (mm^3), du its displacement in the "
+          "increment (mm) and dt the increment of t; c in N per mm^4 per "
+          "unit of t. For a tool retraction, where the sheet hangs on a few "
+          "sliding contacts; the states before the stage's end carry these "
+          "forces, the last one does not (doc/theory.md §5.7, D208).");
         prm.declare_entry("Final load",
                           "",
                           Patterns::Anything(),
@@ -240,6 +301,7 @@ namespace deepdraw
                           "expression from where it is at the stage's "
                           "start.");
         solver::IncrementControlParameters::declare_overrides(prm);
+        solver::NewtonParameters::declare_overrides(prm);
         for (unsigned int tool = 0; tool < n_tool_slots; ++tool)
         {
           prm.enter_subsection("Tool " + std::to_string(tool + 1));
@@ -284,7 +346,8 @@ namespace deepdraw
              {"Blank holder force", ""},
              {"Prescribed displacements", ""},
              {"Release method", "force"},
-             {"Release supports", ""}};
+             {"Release supports", ""},
+             {"Viscous stabilization", ""}};
         const auto check = [&](const std::string &path)
         {
           for (const auto &[name, default_value] : entries)
@@ -303,8 +366,13 @@ namespace deepdraw
         }
         const std::string load_stepping
           = solver::IncrementControlParameters::first_override(prm);
-        if (!load_stepping.empty())
-          throw InputError(prefix + "Load stepping/" + load_stepping
+        const std::string newton
+          = solver::NewtonParameters::first_override(prm);
+        if (!load_stepping.empty() || !newton.empty())
+          throw InputError(prefix
+                           + (load_stepping.empty()
+                                ? "Newton/" + newton
+                                : "Load stepping/" + load_stepping)
                            + " is set, but the stage has no Name (an "
                              "unnamed slot is unused)");
       }
@@ -383,6 +451,7 @@ namespace deepdraw
         stage.prescribed               = defaults.boundary_conditions;
         stage.load_stepping            = defaults.load_stepping;
         stage.load_stepping.final_load = defaults.final_load;
+        stage.newton                   = defaults.newton;
         stage.tool_settings.resize(defaults.n_tool_slots);
         stages.push_back(std::move(stage));
         return stages;

@@ -2,9 +2,8 @@
 #include <cmath>
 #include <deal.II/base/utilities.h>
 #include <deepdraw/io/input_error.h>
-#include <deepdraw/io/printable_text.h>
 #include <deepdraw/solver/increment_control.h>
-#include <memory>
+#include <deepdraw/solver/stage_overrides.h>
 
 namespace deepdraw
 {
@@ -71,15 +70,6 @@ namespace deepdraw
          "Cut-backs allowed for one increment before the run stops (0 to "
          "100)."}};
 
-      std::unique_ptr<Patterns::PatternBase>
-      pattern(const Entry &entry)
-      {
-        if (entry.integer)
-          return std::make_unique<Patterns::Integer>(int(entry.low),
-                                                     int(entry.high));
-        return std::make_unique<Patterns::Double>(entry.low, entry.high);
-      }
-
       void
       set_value(IncrementControlParameters &parameters,
                 const std::string          &name,
@@ -111,7 +101,11 @@ namespace deepdraw
       for (const Entry &entry : entries)
         prm.declare_entry(entry.name,
                           entry.default_value,
-                          *pattern(entry),
+                          *range_pattern({entry.name,
+                                          entry.low,
+                                          entry.high,
+                                          entry.integer,
+                                          entry.description}),
                           entry.description);
       prm.leave_subsection();
     }
@@ -128,18 +122,28 @@ namespace deepdraw
     }
 
 
+    namespace
+    {
+      // The entries as a stage's overrides: every one of them.
+      std::vector<OverridableEntry>
+      overridable_entries()
+      {
+        std::vector<OverridableEntry> list;
+        for (const Entry &entry : entries)
+          list.push_back({entry.name,
+                          entry.low,
+                          entry.high,
+                          entry.integer,
+                          entry.description});
+        return list;
+      }
+    } // namespace
+
+
     void
     IncrementControlParameters::declare_overrides(ParameterHandler &prm)
     {
-      prm.enter_subsection("Load stepping");
-      for (const Entry &entry : entries)
-        prm.declare_entry(entry.name,
-                          "",
-                          Patterns::Anything(),
-                          std::string("Empty: as Load stepping/") + entry.name
-                            + "; otherwise this stage's value. "
-                            + entry.description);
-      prm.leave_subsection();
+      solver::declare_overrides(prm, "Load stepping", overridable_entries());
     }
 
 
@@ -147,20 +151,13 @@ namespace deepdraw
     IncrementControlParameters::parse_overrides(ParameterHandler  &prm,
                                                 const std::string &prefix)
     {
-      prm.enter_subsection("Load stepping");
-      for (const Entry &entry : entries)
-      {
-        const std::string value = Utilities::trim(prm.get(entry.name));
-        if (value.empty())
-          continue;
-        const auto allowed = pattern(entry);
-        if (!allowed->match(value))
-          throw InputError(prefix + "Load stepping/" + entry.name + " = '"
-                           + io::one_line(value) + "': allowed are "
-                           + allowed->description() + ", or empty");
-        set_value(*this, entry.name, value);
-      }
-      prm.leave_subsection();
+      solver::parse_overrides(prm,
+                              "Load stepping",
+                              overridable_entries(),
+                              prefix,
+                              [this](const std::string &name,
+                                     const std::string &value)
+                              { set_value(*this, name, value); });
       check(prefix + "Load stepping/");
     }
 
@@ -168,13 +165,9 @@ namespace deepdraw
     std::string
     IncrementControlParameters::first_override(ParameterHandler &prm)
     {
-      prm.enter_subsection("Load stepping");
-      std::string name;
-      for (const Entry &entry : entries)
-        if (name.empty() && !Utilities::trim(prm.get(entry.name)).empty())
-          name = entry.name;
-      prm.leave_subsection();
-      return name;
+      return solver::first_override(prm,
+                                    "Load stepping",
+                                    overridable_entries());
     }
 
 

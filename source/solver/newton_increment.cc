@@ -119,6 +119,7 @@ namespace deepdraw
           if (residuals.force <= parameters.force_tolerance
               && residuals.contact <= parameters.force_tolerance
               && residuals.tool_forces_met && residuals.enhanced_converged
+              && iterations >= parameters.minimum_iterations
               && (only_predicted
                   || relative_correction <= parameters.correction_tolerance))
             return IncrementOutcome::converged;

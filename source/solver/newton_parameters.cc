@@ -1,7 +1,10 @@
+#include <deal.II/base/utilities.h>
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/solver/newton_parameters.h>
+#include <deepdraw/solver/stage_overrides.h>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace deepdraw
 {
@@ -16,6 +19,18 @@ namespace deepdraw
                         Patterns::Integer(1, 1000),
                         "Newton iterations allowed per increment before it "
                         "is cut back (1 to 1000).");
+      prm.declare_entry(
+        "Minimum iterations",
+        "0",
+        Patterns::Integer(0, 1000),
+        "Newton iterations an increment must take before it may count as "
+        "converged (0 to Maximum iterations). 0: an increment whose "
+        "predictor already meets the tolerances ends there. 1: an increment "
+        "started by the extrapolation predictor takes at least one Newton "
+        "correction, so that the error an accepted state leaves within the "
+        "tolerances does not build up from increment to increment "
+        "(doc/decisions.md D208). The tangent predictor's solve counts as "
+        "the first iteration.");
       prm.declare_entry(
         "Force tolerance",
         "1e-6",
@@ -100,6 +115,7 @@ namespace deepdraw
     {
       prm.enter_subsection("Newton");
       maximum_iterations      = prm.get_integer("Maximum iterations");
+      minimum_iterations      = prm.get_integer("Minimum iterations");
       force_tolerance         = prm.get_double("Force tolerance");
       correction_tolerance    = prm.get_double("Correction tolerance");
       divergence_ratio        = prm.get_double("Divergence ratio");
@@ -110,7 +126,71 @@ namespace deepdraw
       predictor               = prm.get("Predictor");
       tool_force_tolerance    = prm.get_double("Tool force tolerance");
       prm.leave_subsection();
+      check("Newton/");
+    }
 
+
+    namespace
+    {
+      // The entries a stage may set for itself (D208), with their ranges.
+      const char *const stage_note
+        = "Allowed as there; a release by tool retraction may need its own "
+          "(doc/decisions.md D208).";
+      const std::vector<OverridableEntry> overrides
+        = {{"Minimum iterations", 0, 1000, true, stage_note},
+           {"Maximum iterations", 1, 1000, true, stage_note},
+           {"Force tolerance", 0., 1., false, stage_note},
+           {"Correction tolerance", 0., 1., false, stage_note}};
+    } // namespace
+
+
+    void
+    NewtonParameters::declare_overrides(ParameterHandler &prm)
+    {
+      solver::declare_overrides(prm, "Newton", overrides);
+    }
+
+
+    void
+    NewtonParameters::parse_overrides(ParameterHandler  &prm,
+                                      const std::string &prefix)
+    {
+      solver::parse_overrides(
+        prm,
+        "Newton",
+        overrides,
+        prefix,
+        [this](const std::string &name, const std::string &value)
+        {
+          if (name == "Minimum iterations")
+            minimum_iterations = Utilities::string_to_int(value);
+          else if (name == "Maximum iterations")
+            maximum_iterations = Utilities::string_to_int(value);
+          else if (name == "Force tolerance")
+            force_tolerance = Utilities::string_to_double(value);
+          else
+            correction_tolerance = Utilities::string_to_double(value);
+        });
+      check(prefix + "Newton/");
+    }
+
+
+    std::string
+    NewtonParameters::first_override(ParameterHandler &prm)
+    {
+      return solver::first_override(prm, "Newton", overrides);
+    }
+
+
+    void
+    NewtonParameters::check(const std::string &prefix) const
+    {
+      if (minimum_iterations > maximum_iterations)
+        throw InputError(prefix + "Minimum iterations = "
+                         + std::to_string(minimum_iterations)
+                         + " exceeds Maximum iterations = "
+                         + std::to_string(maximum_iterations)
+                         + ": allowed are 0 to Maximum iterations");
       // A tolerance of 0 can never be met (every increment would be cut back
       // to Minimum increment), 1 accepts anything (D50).
       const std::pair<const char *, double> tolerances[]
@@ -120,7 +200,7 @@ namespace deepdraw
       for (const auto &[name, value] : tolerances)
         if (!(value < 1.) || (value == 0. && name[0] != 'T'))
           throw InputError(
-            "Newton/" + std::string(name) + " = " + std::to_string(value)
+            prefix + std::string(name) + " = " + std::to_string(value)
             + " is not allowed: "
             + (name[0] == 'T' ? "0 <= value < 1" : "0 < value < 1"));
     }

@@ -97,6 +97,42 @@ def stage_and_output_cases(source):
                                    "1"))),
              exit=2, messages=["Process/Stage 2/Load stepping/Minimum "
                                "increment must not exceed"]),
+        dict(name="stage_minimum_newton_iterations_not_an_integer",
+             files=cup(two, stage(2, ("Name", "more"),
+                                  ("Newton", "Minimum iterations", "1.5"))),
+             exit=2, messages=["Process/Stage 2/Newton/Minimum iterations = "
+                               "'1.5': allowed are", "or empty"]),
+        dict(name="stage_minimum_newton_iterations_above_maximum",
+             files=cup(two, stage(2, ("Name", "more"),
+                                  ("Newton", "Minimum iterations", "999"))),
+             exit=2, messages=["Process/Stage 2/Newton/Minimum iterations = "
+                               "999 exceeds Maximum iterations = 40"]),
+        dict(name="stage_force_tolerance_zero",
+             files=cup(two, stage(2, ("Name", "more"),
+                                  ("Newton", "Force tolerance", "0"))),
+             exit=2, messages=["Process/Stage 2/Newton/Force tolerance = "
+                               "0.000000 is not allowed: 0 < value < 1"]),
+        dict(name="stage_viscous_stabilization_negative",
+             files=cup(two, stage(2, ("Name", "more"),
+                                  ("Viscous stabilization", "0.4 - t"))),
+             exit=2, messages=["Process/Stage 2/Viscous stabilization = "
+                               "'0.4 - t' gives -0.025 at t = 0.425: allowed "
+                               "are values >= 0"]),
+        dict(name="stage_viscous_stabilization_not_zero_at_the_end",
+             files=cup(two, stage(2, ("Name", "more"),
+                                  ("Viscous stabilization", "1e-3"))),
+             exit=2, messages=["Process/Stage 2/Viscous stabilization = "
+                               "'1e-3' gives 0.001 at the stage's end, t = "
+                               "0.5: it must be 0 there"]),
+        dict(name="stage_viscous_stabilization_not_an_expression",
+             files=cup(two, stage(2, ("Name", "more"),
+                                  ("Viscous stabilization", "1e-3*(0.5-"))),
+             exit=2, messages=["Process/Stage 2/Viscous stabilization = "
+                               "'1e-3*(0.5-': expected 1 expression(s)"]),
+        dict(name="unnamed_stage_with_minimum_newton_iterations",
+             files=cup(stage(1, ("Newton", "Minimum iterations", "1"))),
+             exit=2, messages=["Process/Stage 1/Newton/Minimum iterations is "
+                               "set, but the stage has no Name"]),
         dict(name="release_with_a_free_rigid_body_mode",
              files=cup(two, stage(2, ("Name", "springback"),
                                   ("Kind", "release"))), exit=2,

@@ -18,6 +18,7 @@
 #include <deepdraw/linear_algebra/newton_linear_system.h>
 #include <deepdraw/material/elasto_plasticity.h>
 #include <deepdraw/problem/model_parameters.h>
+#include <deepdraw/problem/viscous_stabilization.h>
 #include <deepdraw/state/checkpoint.h>
 #include <deepdraw/state/simulation_state.h>
 #include <memory>
@@ -218,6 +219,7 @@ namespace deepdraw
       contact::ContactCoupling                            contact_coupling;
       std::unique_ptr<linear_algebra::NewtonLinearSystem> system;
       std::vector<unsigned int>                           faces_with_reactions;
+      ViscousStabilization                                viscous_stabilization;
       // Committed when an increment converges; the trial values of the
       // increment being solved are restored from it on a cut-back.
       state::SimulationState                  committed;

@@ -8,10 +8,13 @@
 #ifndef deepdraw_process_stage_h
 #define deepdraw_process_stage_h
 
+#include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deepdraw/process/prescribed_displacements.h>
 #include <deepdraw/process/release_supports.h>
 #include <deepdraw/solver/increment_control.h>
+#include <deepdraw/solver/newton_parameters.h>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -74,6 +77,14 @@ namespace deepdraw
       std::vector<ReleaseSupport> supports;
       // Its final_load is end_load.
       solver::IncrementControlParameters load_stepping;
+      // Subsection Newton with the stage's overrides (D208).
+      solver::NewtonParameters newton;
+      // Viscous stabilization c(t) (D208), 0 at end_load; null: none.
+      // Evaluated with set_time(t), as every expression of t.
+      std::shared_ptr<FunctionParser<1>> viscous_stabilization;
+      // c(t) at load t (0 without a stabilization).
+      double
+      viscous_coefficient(double load) const;
       // One per tool slot.
       std::vector<ToolStageSettings> tool_settings;
       // "Process/Stage N/" for messages; empty for the stage of a prm
@@ -105,6 +116,7 @@ namespace deepdraw
       std::string                        blank_holder_force;
       PrescribedDisplacements            boundary_conditions;
       solver::IncrementControlParameters load_stepping;
+      solver::NewtonParameters           newton;
       // Of subsection Geometry (the symmetry planes add prescribed
       // displacements).
       bool         symmetry_plane_x = true;

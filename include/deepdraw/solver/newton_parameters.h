@@ -13,7 +13,11 @@ namespace deepdraw
 
     struct NewtonParameters
     {
-      unsigned int maximum_iterations   = 15;
+      unsigned int maximum_iterations = 15;
+      // Newton iterations (corrections after the predictor) an increment
+      // needs before it may converge: 1 keeps an extrapolated start from
+      // being accepted as it stands (doc/decisions.md D208).
+      unsigned int minimum_iterations   = 0;
       double       force_tolerance      = 1e-6;
       double       correction_tolerance = 1e-6;
       // Residual growth over the smallest residual seen in the increment
@@ -42,6 +46,21 @@ namespace deepdraw
       declare_parameters(ParameterHandler &prm);
       void
       parse_parameters(ParameterHandler &prm);
+
+      // Process/Stage N/Newton (D208; solver/stage_overrides.h): Minimum
+      // and Maximum iterations, Force and Correction tolerance, as
+      // IncrementControlParameters does for Load stepping.
+      static void
+      declare_overrides(ParameterHandler &prm);
+      void
+      parse_overrides(ParameterHandler &prm, const std::string &prefix);
+      static std::string
+      first_override(ParameterHandler &prm);
+
+    private:
+      // Throws InputError (prefix + the parameter) for values out of range.
+      void
+      check(const std::string &prefix) const;
     };
   } // namespace solver
 } // namespace deepdraw
