@@ -67,10 +67,11 @@ namespace deepdraw
                             internal_forces);
       if (stage().releases_forces())
         add_release_loads(constraints_used, load, system->rhs());
-      if (stage().viscous_stabilization != nullptr && load > committed.load)
+      const double viscosity = stage().viscous_coefficient(load);
+      if (viscosity > 0. && load > committed.load)
         viscous_stabilization.add(discretisation,
                                   du,
-                                  stage().viscous_coefficient(load),
+                                  viscosity,
                                   load - committed.load,
                                   constraints_used,
                                   matrix,

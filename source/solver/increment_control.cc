@@ -70,6 +70,18 @@ namespace deepdraw
          "Cut-backs allowed for one increment before the run stops (0 to "
          "100)."}};
 
+      // An entry without its default: its range and description.
+      OverridableEntry
+      overridable(const Entry &entry)
+      {
+        return {entry.name,
+                entry.low,
+                entry.high,
+                entry.integer,
+                entry.description};
+      }
+
+
       void
       set_value(IncrementControlParameters &parameters,
                 const std::string          &name,
@@ -101,11 +113,7 @@ namespace deepdraw
       for (const Entry &entry : entries)
         prm.declare_entry(entry.name,
                           entry.default_value,
-                          *range_pattern({entry.name,
-                                          entry.low,
-                                          entry.high,
-                                          entry.integer,
-                                          entry.description}),
+                          *range_pattern(overridable(entry)),
                           entry.description);
       prm.leave_subsection();
     }
@@ -130,11 +138,7 @@ namespace deepdraw
       {
         std::vector<OverridableEntry> list;
         for (const Entry &entry : entries)
-          list.push_back({entry.name,
-                          entry.low,
-                          entry.high,
-                          entry.integer,
-                          entry.description});
+          list.push_back(overridable(entry));
         return list;
       }
     } // namespace
