@@ -25,6 +25,11 @@ namespace deepdraw
       // parameters): the square cup's peak memory on 50 x 50 x 2 and
       // 100 x 100 x 2 grew by 2.84-2.96 kB a cell and point (D203).
       constexpr double bytes_per_cell_and_extra_point = 2.9e3;
+      // The part of a one-rank run's memory that is MUMPS' factors, which
+      // the ranks split: the 100 x 100 x 2 square cup on 1 and 2 ranks
+      // (1 303 against 1 078 MB each, 1 458 against 1 221 MB with reused
+      // factors) gives 0.345 and 0.325 (D209).
+      constexpr double factor_fraction = 1. / 3.;
 
       // A number from a file such as /sys/fs/cgroup/memory.max; negative
       // if it cannot be read or says "max".
@@ -48,17 +53,24 @@ namespace deepdraw
 
 
     double
-    estimated_memory(const BlankGeometry &geometry,
-                     const unsigned int   n_tools,
-                     const unsigned int   points_through_thickness)
+    estimated_memory(const BlankGeometry  &geometry,
+                     const unsigned int    n_tools,
+                     const unsigned int    points_through_thickness,
+                     const RanksOnMachine &ranks)
     {
       const double nodes_per_face = geometry.n_plane_vertices();
       const double extra_points
         = points_through_thickness > 2 ? points_through_thickness - 2. : 0.;
-      return bytes_of_program
-             + (bytes_per_cell + bytes_per_cell_and_extra_point * extra_points)
-                 * geometry.n_cells()
-             + bytes_per_pair * n_tools * nodes_per_face;
+      const double one_rank
+        = bytes_of_program
+          + (bytes_per_cell + bytes_per_cell_and_extra_point * extra_points)
+              * geometry.n_cells()
+          + bytes_per_pair * n_tools * nodes_per_face;
+      // Each rank on the machine holds the model; the factors are split
+      // over all ranks of the run, or held by each (UMFPACK).
+      const double split = ranks.factors_split ? factor_fraction : 0.;
+      const double k     = ranks.on_this_machine;
+      return one_rank * (k * (1. - split) + split * k / ranks.in_run);
     }
 
 
@@ -82,12 +94,13 @@ namespace deepdraw
 
 
     void
-    check_memory(const BlankGeometry &geometry,
-                 const unsigned int   n_tools,
-                 const unsigned int   points_through_thickness)
+    check_memory(const BlankGeometry  &geometry,
+                 const unsigned int    n_tools,
+                 const unsigned int    points_through_thickness,
+                 const RanksOnMachine &ranks)
     {
       const double needed
-        = estimated_memory(geometry, n_tools, points_through_thickness);
+        = estimated_memory(geometry, n_tools, points_through_thickness, ranks);
       const double available = available_memory();
       if (needed <= available)
         return;
@@ -105,11 +118,17 @@ namespace deepdraw
       if (points_through_thickness > 2)
         text << " and " << points_through_thickness
              << " points through the thickness";
-      text << " needs about " << needed / 1e9
-           << " GB of memory (estimated from measured runs), more than the "
-           << available / 1e9
-           << " GB available; use fewer Elements along x, Elements along y "
-              "or Layers through thickness"
+      text << " needs about " << needed / 1e9 << " GB of memory";
+      if (ranks.on_this_machine > 1)
+        text << " on this machine for its " << ranks.on_this_machine
+             << " MPI ranks (estimated from measured runs; every rank holds "
+                "the whole model)";
+      else
+        text << " (estimated from measured runs)";
+      text << ", more than the " << available / 1e9 << " GB available; use "
+           << (ranks.on_this_machine > 1 ? "fewer ranks on this machine, " : "")
+           << "fewer Elements along x, Elements along y or Layers through "
+              "thickness"
            << (points_through_thickness > 2
                  ? ", or Finite element/Points through the thickness"
                  : "");

@@ -52,6 +52,28 @@ namespace deepdraw
     }
 
 
+    unsigned int
+    ranks_on_this_machine()
+    {
+      static const unsigned int count = []
+      {
+        if (n_ranks() == 1)
+          return 1u;
+        MPI_Comm machine = MPI_COMM_NULL;
+        MPI_Comm_split_type(MPI_COMM_WORLD,
+                            MPI_COMM_TYPE_SHARED,
+                            0,
+                            MPI_INFO_NULL,
+                            &machine);
+        int size = 1;
+        MPI_Comm_size(machine, &size);
+        MPI_Comm_free(&machine);
+        return static_cast<unsigned int>(size);
+      }();
+      return count;
+    }
+
+
     std::pair<std::size_t, std::size_t>
     share(const std::size_t n_items, const unsigned int rank)
     {

@@ -62,6 +62,9 @@ namespace deepdraw
       if (n_ranks() == 1)
         return;
       MPI_Comm_dup(MPI_COMM_WORLD, &agreement);
+      // Collective: counted here, where every rank is, for the memory
+      // check (D209).
+      ranks_on_this_machine();
       if (is_root())
         return;
       std::fflush(stdout);

@@ -1,5 +1,6 @@
 #include <deepdraw/blank/memory_estimate.h>
 #include <deepdraw/io/input_error.h>
+#include <deepdraw/parallel/ranks.h>
 #include <deepdraw/postprocess/manager.h>
 #include <deepdraw/problem/model_parameters.h>
 #include <iomanip>
@@ -117,11 +118,17 @@ namespace deepdraw
           throw InputError(text.str());
         }
       }
-      // The mesh is made only if it fits into the memory (D53).
+      // The mesh is made only if it fits into the memory (D53), with every
+      // rank of this machine holding it (D209).
+      blank::RanksOnMachine ranks;
+      ranks.on_this_machine = parallel::ranks_on_this_machine();
+      ranks.in_run          = parallel::n_ranks();
+      ranks.factors_split   = linear_solver.type == "MUMPS";
       blank::check_memory(geometry,
                           contact.active() ? contact.tool_definitions().size()
                                            : 0,
-                          element.points_through_thickness);
+                          element.points_through_thickness,
+                          ranks);
     }
   } // namespace problem
 } // namespace deepdraw

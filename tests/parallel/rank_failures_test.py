@@ -18,6 +18,12 @@ waiting.
   the job (measured: exit code 137 within 2 s), every table ends with a
   whole row, and --resume on 2 ranks from what is on disk ends with the
   uninterrupted 2-rank run's tables within 1e-8.
+- A mesh that fits the memory for one rank but not for the 3 ranks of this
+  machine, each of which holds the whole model (D209): exit 2 before any
+  mesh is made, the message once, naming the ranks and the memory they
+  need together, which is the one-rank estimate of D53 (computed here from
+  its published constants) times 3 (1 - f) + f with MUMPS' factor share
+  f = 1/3 split over the ranks.
 - A failure of rank 0 alone in the middle of the run (a VTU file it cannot
   write; only rank 0 writes): its reason once, exit code 3 within the
   ranks' patience (60 s), the tables on disk end with whole rows at 0.9 or
@@ -27,6 +33,7 @@ waiting.
 """
 import os
 import pathlib
+import re
 import signal
 import subprocess
 import sys
@@ -87,6 +94,62 @@ def input_errors(failures, args, work):
                         "--output-directory", "a_file", timeout=120)
     once(failures, "the output directory a regular file", printed,
          "deepdraw: error in the input:", code, 2)
+
+
+def available_memory():
+    """MemAvailable, limited by the cgroup as deepdraw limits it."""
+    for line in open("/proc/meminfo"):
+        if line.startswith("MemAvailable:"):
+            available = int(line.split()[1]) * 1024
+    try:
+        limit = pathlib.Path("/sys/fs/cgroup/memory.max").read_text().strip()
+        current = int(pathlib.Path("/sys/fs/cgroup/memory.current")
+                      .read_text())
+        if limit != "max":
+            available = min(available, max(0, int(limit) - current))
+    except (OSError, ValueError):
+        pass
+    return available
+
+
+def one_rank_estimate(n):
+    """D53's estimate for the short cup on n x n x 2 cells: 170 MB, 48 kB a
+    cell, 19 kB a contact pair (3 tools, a pair per node of a face)."""
+    return 170e6 + 48e3 * 2 * n * n + 19e3 * 3 * (n + 1) ** 2
+
+
+def memory_of_the_machine(failures, args, work):
+    # The largest square mesh whose one-rank estimate is at most 55 % of
+    # the memory: one rank would be let run, 3 ranks need 2.33 times it.
+    budget = 0.55 * available_memory()
+    n = 1
+    while one_rank_estimate(n + 1) <= budget:
+        n += 1
+    (work / "memory.prm").write_text(
+        f"include {SHORT_CUP}\nsubsection Geometry\n"
+        f"  set Elements along x = {n}\n  set Elements along y = {n}\nend\n")
+    # A refusal takes about a second; a run that was let start is killed
+    # before its mesh fills the memory.
+    try:
+        code, printed = run(3, args.deepdraw, work, "memory.prm",
+                            "--output-directory", "memory", timeout=60)
+    except subprocess.TimeoutExpired:
+        failures.append(f"memory of 3 ranks: the {n} x {n} x 2 mesh was not "
+                        "refused")
+        return
+    once(failures, "memory of 3 ranks on one machine", printed,
+         "deepdraw: error in the input:", code, 2)
+    expected = one_rank_estimate(n) * (3 * (1 - 1 / 3) + 1 / 3) / 1e9
+    found = re.search(r"needs about ([0-9.e+]+) GB of memory on this machine "
+                      r"for its 3 MPI ranks", printed)
+    print(f"{n} x {n} x 2: expected {expected:.4g} GB, message "
+          f"{found.group(1) if found else None}")
+    # The message prints 3 significant digits.
+    if not found or abs(float(found.group(1)) - expected) > 0.0051 * expected:
+        failures.append(f"memory of 3 ranks: expected about {expected:.3g} "
+                        "GB in the message")
+    if (work / "memory").exists():
+        failures.append("memory of 3 ranks: the output directory was made")
 
 
 def wait_for_lines(process, path, n):
@@ -238,6 +301,7 @@ def main():
     args, _, work = script_test.start(__doc__)
     failures = []
     input_errors(failures, args, work)
+    memory_of_the_machine(failures, args, work)
     signal_and_resume(failures, args, work)
     killed_rank(failures, args, work, "rank 1")
     killed_rank(failures, args, work, "rank 0")

@@ -12,15 +12,28 @@ namespace deepdraw
 {
   namespace blank
   {
-    // Bytes a run with UMFPACK needs: the program, and per cell and per
-    // contact pair (n_tools pairs per node of a sheet face) what runs of
-    // the tension bar and the square cup measured, the factors of the
-    // linear solver included (D53); per cell more with more than 2
-    // quadrature points through the thickness (D203).
+    // The ranks of a run that share one machine's memory (D209). Every
+    // rank holds the whole model; MUMPS splits its factors across all the
+    // ranks of the run, UMFPACK factorises on every rank.
+    struct RanksOnMachine
+    {
+      unsigned int on_this_machine = 1;
+      unsigned int in_run          = 1;
+      bool         factors_split   = false;
+    };
+
+    // Bytes a run with UMFPACK needs on one rank: the program, and per
+    // cell and per contact pair (n_tools pairs per node of a sheet face)
+    // what runs of the tension bar and the square cup measured, the
+    // factors of the linear solver included (D53); per cell more with more
+    // than 2 quadrature points through the thickness (D203). With several
+    // ranks on the machine, what they need there together: each rank's
+    // share of the model, and of the factors where they are split (D209).
     double
-    estimated_memory(const BlankGeometry &geometry,
-                     unsigned int         n_tools,
-                     unsigned int         points_through_thickness);
+    estimated_memory(const BlankGeometry  &geometry,
+                     unsigned int          n_tools,
+                     unsigned int          points_through_thickness,
+                     const RanksOnMachine &ranks = RanksOnMachine());
 
     // Bytes available to this process: MemAvailable of /proc/meminfo,
     // limited by the cgroup (memory.max - memory.current) where there is
@@ -31,9 +44,10 @@ namespace deepdraw
     // Throws InputError "the mesh of N cells needs about X GB, more than
     // the Y GB available" if estimated_memory > available_memory.
     void
-    check_memory(const BlankGeometry &geometry,
-                 unsigned int         n_tools,
-                 unsigned int         points_through_thickness);
+    check_memory(const BlankGeometry  &geometry,
+                 unsigned int          n_tools,
+                 unsigned int          points_through_thickness,
+                 const RanksOnMachine &ranks = RanksOnMachine());
   } // namespace blank
 } // namespace deepdraw
 

@@ -26,6 +26,12 @@ namespace deepdraw
     bool
     is_root();
 
+    // How many ranks of the run share this process's machine (its memory):
+    // MPI_COMM_TYPE_SHARED. Counted at the first call, which must be one
+    // that every rank makes (start_ranks makes it); 1 without MPI.
+    unsigned int
+    ranks_on_this_machine();
+
     // Rank `rank`'s share [first, second) of n_items numbered items:
     // contiguous, in the ranks' order, their sizes differing by at most one
     // (all of them on one rank).
