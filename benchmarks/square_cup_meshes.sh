@@ -5,8 +5,11 @@
 # of the process, increments, Newton iterations, the time split from
 # statistics.csv (assembly, contact search, linear solve, output) and the
 # unknowns (all, and the rows of the factorised matrix at the first and the
-# last increment, D60); then the exponent p of wall = c cells^p fitted by
-# least squares in log-log, and a plot of wall time against cells.
+# last increment, D60), the factorisations and the solves with kept factors
+# (their GMRES iterations, D185) from the run's summary, and the peak
+# resident memory (with /usr/bin/time, Debian's package time); then the
+# exponents p of wall = c cells^p and memory = c cells^p fitted by least
+# squares in log-log, and a plot of wall time against cells.
 #
 #   benchmarks/square_cup_meshes.sh [TRAVEL_MM [N ...]]
 # TRAVEL_MM defaults to 8.1, N to "25 50 100 150" (1 250 ... 45 000 cells).
@@ -45,8 +48,10 @@ subsection Linear solver
   set Reuse factorisation = $reuse
 end
 PRM
+  measure=""
+  [ -x /usr/bin/time ] && measure="/usr/bin/time -f %M -o $run/peak_kb"
   start=$(date +%s.%N)
-  if ! "$deepdraw" "$run/mesh.prm" --output-directory "$run/out" > "$run/log" 2>&1; then
+  if ! $measure "$deepdraw" "$run/mesh.prm" --output-directory "$run/out" > "$run/log" 2>&1; then
     tail -3 "$run/log"
     echo "  $n x $n: run failed (log $run/log)"
     continue
@@ -63,10 +68,11 @@ import sys
 
 output = sys.argv[1]
 points = []
+memories = []
 print("| mesh | cells | unknowns (u + contact) | factorised rows (first, last increment) "
-      "| wall | increments | Newton it. | assembly | contact search | linear solve "
-      "(per it.) | output |")
-print("|---|---|---|---|---|---|---|---|---|---|---|")
+      "| wall | increments | Newton it. | factorisations | kept-factor solves (GMRES it.) "
+      "| assembly | contact search | linear solve (per it.) | output | peak memory |")
+print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
 for line in open(output + "/walls"):
     n, start, end = line.split()
     wall = float(end) - float(start)
@@ -77,19 +83,41 @@ for line in open(output + "/walls"):
     match = re.search(r"(\d+) cells, (\d+) displacement unknowns, (\d+) contact", log)
     cells, n_u, n_c = (int(g) for g in match.groups())
     points.append((cells, wall))
-    print("| %s × %s × 2 | %d | %d + %d | %s, %s | %.1f s | %d | %d | %.1f s | %.1f s "
-          "| %.1f s (%.3f s) | %.1f s |"
+    # Printed where a kept factorisation was used (D206); otherwise every
+    # Newton iteration factorised.
+    kept = re.search(r"(\d+) factorisations, (\d+) solves with a kept "
+                     r"factorisation \((\d+) GMRES", log)
+    factorised, reused, gmres = (kept.groups() if kept
+                                 else (int(iterations), 0, 0))
+    try:
+        peak = float(open("%s/%s/peak_kb" % (output, n)).read().split()[-1]) / 1e6
+        memories.append((cells, peak))
+        peak_text = "%.2f GB" % peak
+    except (OSError, ValueError, IndexError):
+        peak_text = "—"
+    print("| %s × %s × 2 | %d | %d + %d | %s, %s | %.1f s | %d | %d | %s | %s (%s) "
+          "| %.1f s | %.1f s | %.1f s (%.3f s) | %.1f s | %s |"
           % (n, n, cells, n_u, n_c, rows[0]["factorized_unknowns"],
              rows[-1]["factorized_unknowns"], wall, len(rows), iterations,
+             factorised, reused, gmres,
              total("assembly_s"), total("contact_search_s"),
              total("linear_solve_s"), total("linear_solve_s") / iterations,
-             total("output_s")))
-if len(points) > 1:
-    x = [math.log(c) for c, _ in points]
-    y = [math.log(w) for _, w in points]
+             total("output_s"), peak_text))
+
+
+def fit(pairs):
+    """c, p of value = c cells^p, least squares in log-log."""
+    x = [math.log(a) for a, _ in pairs]
+    y = [math.log(b) for _, b in pairs]
     mx, my = sum(x) / len(x), sum(y) / len(y)
     p = sum((a - mx) * (b - my) for a, b in zip(x, y)) / sum((a - mx) ** 2 for a in x)
-    c = math.exp(my - p * mx)
+    return math.exp(my - p * mx), p
+
+
+if len(memories) > 1:
+    print("fitted: peak memory = %.3g GB * cells^%.2f" % fit(memories))
+if len(points) > 1:
+    c, p = fit(points)
     print("fitted: wall = %.3g s * cells^%.2f" % (c, p))
     with open(output + "/wall.dat", "w") as f:
         for cells, wall in points:
