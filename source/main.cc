@@ -6,6 +6,7 @@
 #include <csignal>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
+#include <deepdraw/app/blas_kernels.h>
 #include <deepdraw/app/command_line.h>
 #include <deepdraw/app/single_process_mpi.h>
 #include <deepdraw/io/writing_rank.h>
@@ -18,6 +19,8 @@
 int
 main(int argc, char *argv[])
 {
+  // Before anything else: it may start the program again (D210).
+  deepdraw::app::choose_blas_kernels(argv);
   if (const std::string problem = deepdraw::app::working_directory_problem();
       !problem.empty())
   {
