@@ -6,8 +6,8 @@ both OpenBLAS and deepdraw.
 - On a CPU with AVX2 and FMA the kernels deepdraw computes with are not
   OpenBLAS's generic "Prescott" (SSE3) ones; with AVX-512 F, BW, VL and DQ
   they are AVX-512 kernels. Debian 12's OpenBLAS falls back to Prescott on
-  CPUs newer than it (Intel family 6 model 207 here), where the direct
-  solvers ran about a fifth slower.
+  CPUs newer than it (Intel family 6 model 207 here), where the square
+  cup's runs took 1.25 to 1.6 times as long.
 - OPENBLAS_CORETYPE set by the user is kept: with Prescott the program
   loads Prescott once and is not started again.
 - Either way the program does what it was asked (--help, exit 0).
