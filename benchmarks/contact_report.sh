@@ -31,7 +31,7 @@ print("increments %d, cut-backs %d, Newton iterations per increment:"
 print("  " + " ".join(str(i) for i in iterations))
 print("  mean %.2f, max %d, total %d" % (sum(iterations) / len(rows),
                                           max(iterations), sum(iterations)))
-print("time (s): wall %.3f = assembly %.3f (%.0f %%) + contact search %.3f"
+print("time (s): wall %.3f = assembly %.3f (%.0f %%) + contact %.3f"
       " (%.0f %%) + linear solve %.3f (%.0f %%) + output %.3f + other %.3f"
       % (wall, total("assembly_s"), 100 * total("assembly_s") / wall,
          total("contact_search_s"), 100 * total("contact_search_s") / wall,
@@ -39,7 +39,7 @@ print("time (s): wall %.3f = assembly %.3f (%.0f %%) + contact search %.3f"
          total("output_s"),
          wall - total("assembly_s") - total("contact_search_s")
          - total("linear_solve_s") - total("output_s")))
-print("per Newton iteration (s): assembly %.4f, contact search %.5f, linear"
+print("per Newton iteration (s): assembly %.4f, contact %.5f, linear"
       " solve %.4f" % (total("assembly_s") / sum(iterations),
                        total("contact_search_s") / sum(iterations),
                        total("linear_solve_s") / sum(iterations)))

@@ -3,7 +3,7 @@
 # D199): the square cup of prm/square_cup.prm on N x N x 2 cells to a punch
 # travel, under `mpirun -np R` for each rank count R, and per run the wall
 # time of the job, increments, Newton iterations, the time split from
-# statistics.csv (assembly, contact search, linear solve: rank 0's clock),
+# statistics.csv (assembly, contact, linear solve: rank 0's clock),
 # the largest resident memory of a rank, and the speed-up and parallel
 # efficiency against the run on the fewest ranks of the same mesh.
 #

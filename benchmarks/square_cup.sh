@@ -2,7 +2,7 @@
 # Square-cup benchmark (issue 5, not a test): runs prm/square_cup.prm from
 # the Release build to a given punch travel with each requested direct
 # solver and prints wall time, increments, Newton iterations per increment,
-# cut-backs and the time split (assembly, contact search, linear solve,
+# cut-backs and the time split (assembly, contact, linear solve,
 # output) from statistics.csv, whose times include failed attempts.
 #
 #   benchmarks/square_cup.sh [TRAVEL_MM [SOLVER ...]]
@@ -52,7 +52,7 @@ print("wall %.1f s (process), increments %d, cut-backs %d, Newton iterations"
       " %d (%.2f per increment, converged attempts)"
       % (wall, len(rows), total("cut_backs"), iterations,
          iterations / len(rows)))
-parts = [("assembly", "assembly_s"), ("contact search", "contact_search_s"),
+parts = [("assembly", "assembly_s"), ("contact", "contact_search_s"),
          ("linear solve", "linear_solve_s"), ("output", "output_s")]
 increments = total("wall_s")
 line = ", ".join("%s %.1f s (%.0f %%)" % (name, total(key),

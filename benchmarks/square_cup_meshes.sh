@@ -3,7 +3,7 @@
 # prm/square_cup.prm with only the mesh changed (N x N x 2 hexahedra) to a
 # punch travel, one mesh after the other, and prints per mesh the wall time
 # of the process, increments, Newton iterations, the time split from
-# statistics.csv (assembly, contact search, linear solve, output) and the
+# statistics.csv (assembly, contact, linear solve, output) and the
 # unknowns (all, and the rows of the factorised matrix at the first and the
 # last increment, D60), the factorisations and the solves with kept factors
 # (their GMRES iterations, D185) from the run's summary, and the peak
@@ -71,7 +71,7 @@ points = []
 memories = []
 print("| mesh | cells | unknowns (u + contact) | factorised rows (first, last increment) "
       "| wall | increments | Newton it. | factorisations | kept-factor solves (GMRES it.) "
-      "| assembly | contact search | linear solve (per it.) | output | peak memory |")
+      "| assembly | contact | linear solve (per it.) | output | peak memory |")
 print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
 for line in open(output + "/walls"):
     n, start, end = line.split()

@@ -31,6 +31,8 @@ namespace deepdraw
                      "stick_pairs",
                      "slip_pairs",
                      "assembly_s",
+                     // The whole contact coupling since D212 (search, law
+                     // and terms); the name is kept for existing tables.
                      "contact_search_s",
                      "linear_solve_s",
                      "output_s",
@@ -61,7 +63,7 @@ namespace deepdraw
                         double(contact.n_stick()),
                         double(contact.n_slip()),
                         report.assembly_time,
-                        report.search_time,
+                        report.contact_time,
                         report.solve_time,
                         simulation.output_time(),
                         simulation.increment_wall_time(),
@@ -80,8 +82,8 @@ namespace deepdraw
       "statistics",
       "statistics.csv, a row per converged increment: load, Newton iterations, "
       "cut-backs, residuals, plastic points, contact states, the time of "
-      "assembly, contact search, linear solve and output (of the "
-      "post-processors listed before it) and the whole increment, the sheet's "
-      "volume and the linear solver's sizes.")
+      "assembly, contact (search, law and terms), linear solve and output (of "
+      "the post-processors listed before it) and the whole increment, the "
+      "sheet's volume and the linear solver's sizes.")
   } // namespace postprocess
 } // namespace deepdraw

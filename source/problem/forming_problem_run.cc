@@ -262,7 +262,7 @@ namespace deepdraw
       // The times of an increment include its failed attempts (cut-backs):
       // they are reset only once it has converged.
       increments->start_timing();
-      run_record.start_increment(model->contact().search_time());
+      run_record.start_increment(model->contact().contact_time());
     }
 
 
@@ -282,7 +282,7 @@ namespace deepdraw
                                   cut_backs,
                                   increments->progress(),
                                   model->linear_system().statistics(),
-                                  model->contact().search_time());
+                                  model->contact().contact_time());
       postprocessors.execute(*view);
       console.increment(*view, iterations, cut_backs);
 

@@ -5,9 +5,9 @@ namespace deepdraw
   namespace problem
   {
     void
-    RunRecord::start_increment(const double search_time)
+    RunRecord::start_increment(const double contact_time)
     {
-      search_time_at_start = search_time;
+      contact_time_at_start = contact_time;
       increment_timer.restart();
     }
 
@@ -19,9 +19,9 @@ namespace deepdraw
       const unsigned int                      cut_backs,
       const NewtonProgress                   &progress,
       const solver::LinearSolver::Statistics &statistics,
-      const double                            search_time)
+      const double                            contact_time)
     {
-      report.search_time         = search_time - search_time_at_start;
+      report.contact_time        = contact_time - contact_time_at_start;
       report.load_increment      = load_increment;
       report.iterations          = iterations;
       report.cut_backs           = cut_backs;

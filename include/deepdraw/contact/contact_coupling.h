@@ -289,8 +289,10 @@ namespace deepdraw
       // Pairs that were penetrating at the start of the run.
       unsigned int
       n_initial_penetrations(const std::vector<Point<3>> &positions) const;
+      // Wall time spent in assemble() so far (s): the search, the local
+      // law and the pairs' terms in the Newton system.
       double
-      search_time() const;
+      contact_time() const;
 
       // Checks that no tool passed through the sheet (D56,
       // contact_coupling_checks.cc). At the start (of the run, at load,
@@ -409,7 +411,7 @@ namespace deepdraw
       std::vector<Pair>                         pairs;
       std::unique_ptr<contact::AlartCurnierLaw> law;
       double                                    force_regularisation = 1.;
-      double                                    total_search_time    = 0.;
+      double                                    total_contact_time   = 0.;
     };
   } // namespace contact
 } // namespace deepdraw

@@ -37,7 +37,7 @@ namespace deepdraw
       unsigned int contact_changes  = 0;
       // Wall times of its attempts (s).
       double assembly_time = 0.;
-      double search_time   = 0.;
+      double contact_time  = 0.;
       double solve_time    = 0.;
       // The last linear solve's factorised unknowns, and the orderings
       // computed since the last report.

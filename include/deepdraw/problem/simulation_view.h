@@ -24,24 +24,24 @@ namespace deepdraw
       bool at_landing   = false;
       bool at_stage_end = false;
       // The linear solver's counts at the last report, the contact
-      // search's time when the increment began (s).
+      // coupling's time when the increment began (s).
       solver::LinearSolver::Statistics reported_solver_statistics;
-      double                           search_time_at_start = 0.;
+      double                           contact_time_at_start = 0.;
 
-      // An increment's first attempt begins; search_time: the contact
-      // search's time so far.
+      // An increment's first attempt begins; contact_time: the contact
+      // coupling's time so far.
       void
-      start_increment(double search_time);
+      start_increment(double contact_time);
       // The report of an increment converged with iterations after
       // cut_backs, from its Newton progress, the linear solver's counts
-      // and the contact search's time so far.
+      // and the contact coupling's time so far.
       void
       record_increment(double                                  load_increment,
                        unsigned int                            iterations,
                        unsigned int                            cut_backs,
                        const NewtonProgress                   &progress,
                        const solver::LinearSolver::Statistics &statistics,
-                       double                                  search_time);
+                       double                                  contact_time);
     };
 
     class SimulationView : public postprocess::SimulationAccess
