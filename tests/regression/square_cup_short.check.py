@@ -37,6 +37,12 @@ measured values of the stored run in brackets):
 - The punch force is positive and grows at every increment up to 3 mm
   (far below its maximum) [smallest step 36 N]; the punch travel column
   equals the load of statistics.csv row by row.
+- The time columns of statistics.csv time disjoint parts of an increment:
+  assembly_s + contact_search_s + linear_solve_s + output_s <= wall_s in
+  every row, to 1 ms (a margin for the separate clocks) [0.986 at most]; a
+  part timed twice, or the elements inside the contact time, would break
+  it. contact_search_s > 0 in every row: the contact coupling is timed
+  whole (D212).
 
 Regression: the rows of punch_force.csv and draw_in.csv at the landing
 travels (multiples of Output interval = 0.5 mm, which every Newton path
@@ -239,6 +245,19 @@ def physical_checks(output, failures):
     if dx < 0.02 or abs(dx - dy) > 0.02 * max(dx, dy) or dd <= 0:
         failures.append("draw-in DX %.4g DY %.4g DD %.4g" % (dx, dy, dd))
 
+    worst_share = 0.0
+    for s in statistics:
+        parts = sum(float(s[k]) for k in ("assembly_s", "contact_search_s",
+                                          "linear_solve_s", "output_s"))
+        wall = float(s["wall_s"])
+        worst_share = max(worst_share, parts / wall)
+        if parts > wall + 1e-3 or float(s["contact_search_s"]) <= 0:
+            failures.append("increment %s: timed parts %.4g s of a wall time "
+                            "of %.4g s, contact %s s"
+                            % (s["increment"], parts, wall,
+                               s["contact_search_s"]))
+            break
+
     forces = [float(r["punch_force_N"]) for r in converged]
     smallest_step = min(b - a for a, b in zip(forces, forces[1:]))
     if forces[0] <= 0 or smallest_step <= 0:
@@ -249,10 +268,11 @@ def physical_checks(output, failures):
           "thickening %.2g, edge strain %.3g / %.3g, OD thinning %.3g at %.1f "
           "mm (centre %.3g), volume change %.3g, draw-in retreat %.2g mm, DX "
           "%.4f DY %.4f (%.2f %%) DD %.4f mm, smallest punch force step "
-          "%.3g N" % (worst_balance, worst_holder, worst_lift, edge["1.5"],
+          "%.3g N, timed parts at most %.3f of the wall time"
+          % (worst_balance, worst_holder, worst_lift, edge["1.5"],
                       edge["3"], eps_min, s_min, eps_centre, worst_volume,
                       worst_retreat, dx, dy, 100 * abs(dx - dy) / max(dx, dy),
-                      dd, smallest_step))
+                      dd, smallest_step, worst_share))
 
 
 def main(output):
