@@ -147,6 +147,82 @@ namespace deepdraw
     } // namespace
 
 
+    namespace
+    {
+      // MPI_Alltoallv of vectors of trivially copyable items, as bytes.
+      template <typename T>
+      void
+      exchange_items(const std::vector<std::vector<T>> &to_rank,
+                     std::vector<std::vector<T>>       &from_rank)
+      {
+        const unsigned int n = n_ranks();
+        from_rank.assign(n, {});
+        if (n == 1)
+        {
+          from_rank[0] = to_rank[0];
+          return;
+        }
+        std::vector<int> send_counts(n), receive_counts(n), send_offsets(n),
+          receive_offsets(n);
+        std::vector<char> send_buffer;
+        for (unsigned int r = 0; r < n; ++r)
+        {
+          send_offsets[r]   = send_buffer.size();
+          send_counts[r]    = to_rank[r].size() * sizeof(T);
+          const char *bytes = reinterpret_cast<const char *>(to_rank[r].data());
+          send_buffer.insert(send_buffer.end(), bytes, bytes + send_counts[r]);
+        }
+        MPI_Alltoall(send_counts.data(),
+                     1,
+                     MPI_INT,
+                     receive_counts.data(),
+                     1,
+                     MPI_INT,
+                     MPI_COMM_WORLD);
+        std::size_t total = 0;
+        for (unsigned int r = 0; r < n; ++r)
+        {
+          receive_offsets[r] = total;
+          total += receive_counts[r];
+        }
+        std::vector<char> receive_buffer(total);
+        MPI_Alltoallv(send_buffer.data(),
+                      send_counts.data(),
+                      send_offsets.data(),
+                      MPI_BYTE,
+                      receive_buffer.data(),
+                      receive_counts.data(),
+                      receive_offsets.data(),
+                      MPI_BYTE,
+                      MPI_COMM_WORLD);
+        for (unsigned int r = 0; r < n; ++r)
+        {
+          from_rank[r].resize(receive_counts[r] / sizeof(T));
+          std::copy(receive_buffer.begin() + receive_offsets[r],
+                    receive_buffer.begin() + receive_offsets[r]
+                      + receive_counts[r],
+                    reinterpret_cast<char *>(from_rank[r].data()));
+        }
+      }
+    } // namespace
+
+
+    void
+    exchange(const std::vector<std::vector<double>> &to_rank,
+             std::vector<std::vector<double>>       &from_rank)
+    {
+      exchange_items(to_rank, from_rank);
+    }
+
+
+    void
+    exchange(const std::vector<std::vector<unsigned long long>> &to_rank,
+             std::vector<std::vector<unsigned long long>>       &from_rank)
+    {
+      exchange_items(to_rank, from_rank);
+    }
+
+
     void
     barrier()
     {

@@ -23,7 +23,7 @@ namespace deepdraw
 
       material_model
         = std::make_unique<material::ElastoPlasticity>(parameters.material);
-      system = linear_algebra::make_serial_system(parameters.linear_solver);
+      system = linear_algebra::make_system(parameters.linear_solver);
       discretisation.create(parameters.geometry,
                             parameters.element.points_through_thickness);
       element = std::make_unique<fe::HexahedronElement>(

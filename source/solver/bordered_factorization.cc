@@ -2,6 +2,7 @@
 #include <Epetra_CrsMatrix.h>
 #include <algorithm>
 #include <deal.II/base/parallel.h>
+#include <deepdraw/parallel/ranks.h>
 #include <deepdraw/solver/bordered_factorization.h>
 #include <iterator>
 #include <mutex>
@@ -13,7 +14,8 @@ namespace deepdraw
   {
     void
     BorderedFactorization::factorize(const std::string          &type,
-                                     const SparseMatrix<double> &matrix)
+                                     const SparseMatrix<double> &matrix,
+                                     const std::vector<bool>    &owned)
     {
       this->type = type;
       if (type == "UMFPACK")
@@ -25,7 +27,7 @@ namespace deepdraw
       {
         if (mumps == nullptr)
           mumps = std::make_unique<MumpsFactorization>(scale_matrix);
-        mumps->factorize(matrix);
+        mumps->factorize(matrix, owned);
         return;
       }
       // KLU through Amesos. The old solver refers to the old problem and
@@ -159,10 +161,15 @@ namespace deepdraw
         border_position[bordered[k]] = k;
       }
       reduced_index.assign(n, numbers::invalid_dof_index);
+      reduced_owned.clear();
       types::global_dof_index n_m = 0;
       for (types::global_dof_index i = 0; i < n; ++i)
         if (role[i] == kept)
+        {
           reduced_index[i] = n_m++;
+          if (!owned_rows.empty())
+            reduced_owned.push_back(owned_rows[i]);
+        }
 
       std::vector<unsigned int> row_lengths(n_m, 0);
       for (types::global_dof_index i = 0; i < n; ++i)
@@ -215,7 +222,7 @@ namespace deepdraw
       std::vector<types::global_dof_index> coupled;
       std::mutex                           coupled_mutex;
       // The rows are independent: both cores (D98).
-      parallel::apply_to_subranges(
+      dealii::parallel::apply_to_subranges(
         types::global_dof_index(0),
         n,
         [&](const types::global_dof_index begin,
@@ -231,7 +238,18 @@ namespace deepdraw
         },
         2048);
       if (coupled.empty())
+      {
+        // Each rank copied the rows it owns (D214).
+        if (!owned_rows.empty())
+        {
+          for (auto *border : {&border_columns, &border_rows})
+            for (Vector<double> &vector : *border)
+              parallel::sum(vector.begin(), vector.size());
+          if (n_b > 0)
+            parallel::sum(&corner(0, 0), n_b * n_b);
+        }
         return true;
+      }
       // Not decoupled after all: keep these from now on.
       for (const auto j : coupled)
         is_decoupled[j] = false;
@@ -252,6 +270,8 @@ namespace deepdraw
       // step instead of searching each entry.
       for (types::global_dof_index i = begin; i < end; ++i)
       {
+        if (!owned_rows.empty() && !owned_rows[i])
+          continue;
         const Role role_i = role[i];
         if (role_i == left_out)
         {
@@ -313,7 +333,7 @@ namespace deepdraw
       {
         role.clear();
         statistics.factorized_unknowns = n;
-        factorize(type, matrix);
+        factorize(type, matrix, owned_rows);
         ++statistics.numeric_factorizations;
         back_substitute(rhs, solution);
         kept_size = n;
@@ -323,7 +343,7 @@ namespace deepdraw
       reduce(matrix, bordered, decoupled);
       const types::global_dof_index n_m = reduced_pattern.n_rows();
       statistics.factorized_unknowns    = n_m;
-      factorize(type, reduced_matrix);
+      factorize(type, reduced_matrix, reduced_owned);
       ++statistics.numeric_factorizations;
       // columns: f, then C (the border columns); M^-1 of all at once.
       std::vector<Vector<double>> columns(1, Vector<double>(n_m));

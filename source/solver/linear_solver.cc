@@ -145,12 +145,17 @@ namespace deepdraw
                          "Linear solver/Reuse factorisation = true: allowed "
                          "with AMG is false");
       // KLU and the AMG hierarchy are built on Trilinos' serial maps
-      // (D199).
-      if (parallel::n_ranks() > 1 && type != "MUMPS" && type != "UMFPACK")
+      // (D199); UMFPACK and the decoupled unknowns' search need the whole
+      // matrix, which no rank holds (D214).
+      if (parallel::n_ranks() > 1 && type != "MUMPS")
         throw InputError("Linear solver/Type = " + type
                          + " runs on one MPI "
-                           "rank; allowed under mpirun are MUMPS (factorised "
-                           "across the ranks) and UMFPACK");
+                           "rank; allowed under mpirun is MUMPS (factorised "
+                           "across the ranks)");
+      if (parallel::n_ranks() > 1 && leave_out_decoupled)
+        throw InputError("Linear solver/Leave out decoupled unknowns = true "
+                         "runs on one MPI rank; allowed under mpirun is "
+                         "false");
       prm.leave_subsection();
     }
 
@@ -211,8 +216,12 @@ namespace deepdraw
       const types::global_dof_index               n_displacements,
       const std::vector<MultiplierBlock>         &blocks,
       const std::vector<types::global_dof_index> &tool_positions,
-      const std::vector<bool>                    &constrained)
+      const std::vector<bool>                    &constrained,
+      const std::vector<bool>                    &owned_rows)
     {
+      implementation->owned_rows = owned_rows;
+      if (!owned_rows.empty())
+        implementation->full_pattern = nullptr; // a new reduction
       if (!parameters.condense_multipliers || blocks.empty())
       {
         condensation.reset();
@@ -226,7 +235,10 @@ namespace deepdraw
                                n_displacements,
                                blocks,
                                tool_positions,
-                               constrained);
+                               constrained,
+                               owned_rows);
+      condensed_implementation->owned_rows
+        = condensation->owned_condensed_rows();
     }
 
 
@@ -398,6 +410,26 @@ namespace deepdraw
         double initial = 0.;
       };
 
+      // The matrix of a solve: under mpirun each rank multiplies the rows it
+      // owns, and the sum over the ranks is the product (D214).
+      struct OwnedRowsOperator
+      {
+        const SparseMatrix<double> &matrix;
+        const std::vector<bool>    &owned;
+
+        void
+        vmult(Vector<double> &dst, const Vector<double> &src) const
+        {
+          matrix.vmult(dst, src);
+          if (owned.empty())
+            return;
+          for (types::global_dof_index i = 0; i < dst.size(); ++i)
+            if (!owned[i])
+              dst[i] = 0.;
+          parallel::sum(dst.begin(), dst.size());
+        }
+      };
+
       // An earlier matrix's factors as the preconditioner of GMRES.
       struct KeptInverse
       {
@@ -428,10 +460,11 @@ namespace deepdraw
                                                       + 2,
                                                     true));
       solution.reinit(matrix.m());
-      bool converged = true;
+      const OwnedRowsOperator operator_A{matrix, data.owned_rows};
+      bool                    converged = true;
       try
       {
-        gmres.solve(matrix, solution, rhs, KeptInverse{&data});
+        gmres.solve(operator_A, solution, rhs, KeptInverse{&data});
       }
       catch (const SolverControl::NoConvergence &)
       {
@@ -446,7 +479,16 @@ namespace deepdraw
       if (!converged)
         return false;
       Vector<double> residual(matrix.m());
-      if (!(matrix.residual(residual, solution, rhs) <= 1.01 * target))
+      double         residual_norm = 0.;
+      if (data.owned_rows.empty())
+        residual_norm = matrix.residual(residual, solution, rhs);
+      else
+      {
+        operator_A.vmult(residual, solution);
+        residual.sadd(-1., 1., rhs);
+        residual_norm = residual.l2_norm();
+      }
+      if (!(residual_norm <= 1.01 * target))
         return false;
       ++solve_statistics.reused_solves;
       return true;

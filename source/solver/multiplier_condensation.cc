@@ -2,6 +2,7 @@
 #include <atomic>
 #include <cmath>
 #include <deal.II/base/parallel.h>
+#include <deepdraw/parallel/ranks.h>
 #include <deepdraw/solver/multiplier_condensation.h>
 #include <stdexcept>
 
@@ -180,8 +181,10 @@ namespace deepdraw
       const types::global_dof_index               n_displacements,
       const std::vector<MultiplierBlock>         &pair_blocks,
       const std::vector<types::global_dof_index> &tool_positions,
-      const std::vector<bool>                    &constrained)
+      const std::vector<bool>                    &constrained,
+      const std::vector<bool>                    &owned_rows)
     {
+      owned                             = owned_rows;
       n_u                               = n_displacements;
       blocks                            = pair_blocks;
       tool_position_dofs                = tool_positions;
@@ -224,15 +227,18 @@ namespace deepdraw
       // pair couple only to its node and z, which the node's rows have);
       // the tool rows become dense (a tool's pairs bring their nodes'
       // rows), as LinearSolver borders them anyway.
+      // Under mpirun a rank's rows of other ranks keep their diagonal.
       std::vector<unsigned int> row_lengths(n_c, n_c);
       for (types::global_dof_index i = 0; i < n_u; ++i)
-        row_lengths[i] = pattern.row_length(i);
+        row_lengths[i] = owns(i) ? pattern.row_length(i) : 1;
       condensed_pattern.reinit(n_c, n_c, row_lengths);
       std::vector<types::global_dof_index> columns;
       for (types::global_dof_index i = 0; i < n_c; ++i)
       {
         columns.clear();
-        if (i < n_u)
+        if (i < n_u && !owns(i))
+          columns.push_back(i);
+        else if (i < n_u)
         {
           for (auto entry = pattern.begin(i); entry != pattern.end(i); ++entry)
             if (condensed_of[entry->column()] != numbers::invalid_dof_index)
@@ -344,13 +350,59 @@ namespace deepdraw
     }
 
 
+    std::vector<bool>
+    MultiplierCondensation::owned_condensed_rows() const
+    {
+      if (owned.empty())
+        return {};
+      std::vector<bool> rows(owned.begin(), owned.begin() + n_u);
+      rows.resize(n_u + tool_position_dofs.size(), parallel::is_root());
+      return rows;
+    }
+
+
     bool
     MultiplierCondensation::condense(const SparseMatrix<double> &matrix,
                                      const Vector<double>       &rhs)
     {
+      bool condensed = condense_owned(matrix, rhs);
+      if (owned.empty())
+        return condensed;
+      // Every rank takes the same path; each added its own pairs to the
+      // tool rows (D214).
+      condensed = parallel::maximum(condensed ? 0 : 1) == 0;
+      coupled_pairs
+        = static_cast<unsigned int>(parallel::sum(coupled_pairs + 0ULL));
+      if (!condensed)
+        return false;
+      for (unsigned int t = 0; t < tool_position_dofs.size(); ++t)
+      {
+        const auto row = n_u + t;
+        // A row's values lie together; the diagonal (0, 0) is the first.
+        double *values = const_cast<double *>(&condensed_matrix(0, 0));
+        parallel::sum(values + condensed_pattern.begin(row)->global_index(),
+                      condensed_pattern.row_length(row));
+      }
+      // Each rank wrote the right-hand side of its own rows (the others
+      // stay zero), and its part of the tool rows'.
+      parallel::sum(condensed_rhs.begin(), condensed_rhs.size());
+      return true;
+    }
+
+
+    bool
+    MultiplierCondensation::condense_owned(const SparseMatrix<double> &matrix,
+                                           const Vector<double>       &rhs)
+    {
       coupled_pairs = 0;
+      // The right-hand side of the last solve was summed over the ranks.
+      if (!owned.empty())
+        condensed_rhs = 0.;
       for (unsigned int k = 0; k < blocks.size(); ++k)
       {
+        local_blocks[k] = LocalBlocks();
+        if (!owns(blocks[k].displacement[0]))
+          continue;
         // False for blocks without the structure of Eq. 4.1 or a singular
         // E or C.
         if (!read_blocks(matrix, k, local_blocks[k]))
@@ -402,14 +454,14 @@ namespace deepdraw
       }
       // The copied rows are independent: both cores (D98).
       std::atomic<bool> copied{true};
-      parallel::apply_to_subranges(
+      dealii::parallel::apply_to_subranges(
         types::global_dof_index(0),
         n_u,
         [&](const types::global_dof_index begin,
             const types::global_dof_index end)
         {
           for (types::global_dof_index i = begin; i < end; ++i)
-            if (!done[i])
+            if (!done[i] && owns(i))
             {
               if (!copy_row(matrix, i))
                 copied = false;
@@ -420,12 +472,15 @@ namespace deepdraw
       if (!copied)
         return false;
 
-      // Tool rows: dlambda of every pair they hold substituted (Eq. 4.2).
+      // Tool rows: dlambda of every pair they hold substituted (Eq. 4.2);
+      // under mpirun each rank its own pairs', rank 0 the row itself.
+      const bool with_tool_row = owned.empty() || parallel::is_root();
       for (unsigned int t = 0; t < tool_position_dofs.size(); ++t)
       {
         const auto z = tool_position_dofs[t];
-        row.add(matrix, z, 1.);
-        double b = rhs[z];
+        if (with_tool_row)
+          row.add(matrix, z, 1.);
+        double b = with_tool_row ? rhs[z] : 0.;
         for (unsigned int k = 0; k < blocks.size(); ++k)
         {
           const LocalBlocks     &local = local_blocks[k];
@@ -487,13 +542,12 @@ namespace deepdraw
                                    Vector<double>       &solution) const
     {
       solution.reinit(matrix.m());
-      for (types::global_dof_index i = 0; i < matrix.m(); ++i)
-        if (condensed_of[i] != numbers::invalid_dof_index)
-          solution[i] = condensed_solution[condensed_of[i]];
       for (unsigned int k = 0; k < blocks.size(); ++k)
       {
         const LocalBlocks     &local = local_blocks[k];
         const MultiplierBlock &block = blocks[k];
+        if (!owns(block.displacement[0]))
+          continue;
         for (unsigned int c = 0; c < 3; ++c)
           if (is_constrained[block.multiplier[c]])
             solution[block.multiplier[c]]
@@ -521,6 +575,12 @@ namespace deepdraw
           solution[block.multiplier[local.free[a]]] = value;
         }
       }
+      // Each rank solved for its own pairs' multipliers (D214).
+      if (!owned.empty())
+        parallel::sum(solution.begin(), solution.size());
+      for (types::global_dof_index i = 0; i < matrix.m(); ++i)
+        if (condensed_of[i] != numbers::invalid_dof_index)
+          solution[i] = condensed_solution[condensed_of[i]];
     }
 
 

@@ -143,11 +143,16 @@ namespace deepdraw
 
 
     void
-    MumpsFactorization::factorize(const SparseMatrix<double> &matrix)
+    MumpsFactorization::factorize(const SparseMatrix<double> &matrix,
+                                  const std::vector<bool>    &owned)
     {
       const SparsityPattern &pattern = matrix.get_sparsity_pattern();
-      if (!analysed || !analysed_pattern.matches(pattern))
-        set_up_pattern(pattern);
+      bool new_pattern = !analysed || !analysed_pattern.matches(pattern);
+      // The analysis is collective: the ranks agree on a new one.
+      if (distributed)
+        new_pattern = parallel::maximum(new_pattern ? 1 : 0) == 1;
+      if (new_pattern)
+        set_up_pattern(pattern, owned);
       // The values in storage order are the coordinate entries of
       // set_up_pattern: MUMPS reads them in place, during job 2 only. The
       // first stored entry is (0, 0): a square pattern stores the diagonal
@@ -155,7 +160,13 @@ namespace deepdraw
       double *values = pattern.n_nonzero_elements() == 0
                          ? nullptr
                          : const_cast<double *>(&matrix(0, 0));
-      if (distributed)
+      if (distributed && by_owned_rows)
+      {
+        for (std::size_t k = 0; k < local_positions.size(); ++k)
+          local_values[k] = values[local_positions[k]];
+        data.a_loc = local_values.empty() ? nullptr : local_values.data();
+      }
+      else if (distributed)
         data.a_loc = row_index.empty() ? nullptr : values + first_local_entry;
       else
         data.a = row_index.empty() ? nullptr : values;
@@ -295,7 +306,8 @@ namespace deepdraw
     // Coordinate format in the storage order of the compressed pattern
     // (MUMPS accepts any order), which is that of the matrix's values.
     void
-    MumpsFactorization::set_up_pattern(const SparsityPattern &pattern)
+    MumpsFactorization::set_up_pattern(const SparsityPattern   &pattern,
+                                       const std::vector<bool> &owned)
     {
       AssertThrow(pattern.is_compressed()
                     && pattern.n_rows() == pattern.n_cols()
@@ -316,17 +328,37 @@ namespace deepdraw
       first_local_entry = first_entry(first_row);
       row_index.clear();
       column_index.clear();
-      row_index.reserve(first_entry(end_row) - first_local_entry);
-      column_index.reserve(row_index.capacity());
-      std::size_t k = first_local_entry;
-      for (types::global_dof_index i = first_row; i < end_row; ++i)
-        for (auto entry = pattern.begin(i); entry != pattern.end(i);
-             ++entry, ++k)
-        {
-          AssertThrow(entry->global_index() == k, ExcInternalError());
-          row_index.push_back(i + 1);
-          column_index.push_back(entry->column() + 1);
-        }
+      local_positions.clear();
+      by_owned_rows = distributed && !owned.empty();
+      if (by_owned_rows)
+      {
+        // The rows this rank owns, wherever they lie (D214).
+        AssertThrow(owned.size() == n_rows, ExcInternalError());
+        for (types::global_dof_index i = 0; i < n_rows; ++i)
+          if (owned[i])
+            for (auto entry = pattern.begin(i); entry != pattern.end(i);
+                 ++entry)
+            {
+              local_positions.push_back(entry->global_index());
+              row_index.push_back(i + 1);
+              column_index.push_back(entry->column() + 1);
+            }
+        local_values.resize(local_positions.size());
+      }
+      else
+      {
+        row_index.reserve(first_entry(end_row) - first_local_entry);
+        column_index.reserve(row_index.capacity());
+        std::size_t k = first_local_entry;
+        for (types::global_dof_index i = first_row; i < end_row; ++i)
+          for (auto entry = pattern.begin(i); entry != pattern.end(i);
+               ++entry, ++k)
+          {
+            AssertThrow(entry->global_index() == k, ExcInternalError());
+            row_index.push_back(i + 1);
+            column_index.push_back(entry->column() + 1);
+          }
+      }
       data.n = n_rows;
       if (distributed)
       {

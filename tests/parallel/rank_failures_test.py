@@ -3,7 +3,9 @@
 printed once, the exit code is the one-rank run's, and no rank is left
 waiting.
 - Input errors found by every rank (a parameter out of range, KLU, which
-  runs on one rank, --study): exit 2, the message once, nothing written.
+  runs on one rank, UMFPACK and the decoupled unknowns left out, which need
+  the whole matrix on one rank (D214), --study): exit 2, the message once,
+  nothing written.
 - An input error found by rank 0 alone (the output directory is a regular
   file; only rank 0 makes and locks it): exit 2 once, the other rank does
   not hang (the start-up agreement).
@@ -53,6 +55,18 @@ subsection Linear solver
 end
 """
 
+UMFPACK = """include {base}
+subsection Linear solver
+  set Type = UMFPACK
+end
+"""
+
+LEAVE_OUT = """include {base}
+subsection Linear solver
+  set Leave out decoupled unknowns = true
+end
+"""
+
 # Slower, so that a signal finds it running: the same cup on 24 x 24 x 2.
 FINER = """include {base}
 subsection Geometry
@@ -78,8 +92,12 @@ def once(failures, what, output, text, code, expected_code):
 def input_errors(failures, args, work):
     (work / "bad.prm").write_text(BAD_ELEMENTS.format(base=SHORT_CUP))
     (work / "klu.prm").write_text(KLU.format(base=SHORT_CUP))
+    (work / "umfpack.prm").write_text(UMFPACK.format(base=SHORT_CUP))
+    (work / "leave_out.prm").write_text(LEAVE_OUT.format(base=SHORT_CUP))
     cases = [("a parameter out of range", ["bad.prm"], "bad"),
              ("KLU", ["klu.prm"], "klu"),
+             ("UMFPACK", ["umfpack.prm"], "umfpack"),
+             ("decoupled unknowns left out", ["leave_out.prm"], "leave_out"),
              ("--study", [SHORT_CUP, "--study", "Geometry/Layers = 2, 4"],
               "study")]
     for what, arguments, output in cases:

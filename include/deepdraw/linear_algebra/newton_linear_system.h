@@ -79,7 +79,8 @@ namespace deepdraw
       virtual solver::LinearSolver::Statistics
       statistics() const = 0;
 
-      // The assembled matrix as a full matrix (tests of the tangent).
+      // The assembled matrix as a full matrix (tests of the tangent); split
+      // by rows, the rows this rank owns (the others zero).
       virtual void
       copy_to(FullMatrix<double> &full) const = 0;
     };
@@ -87,6 +88,10 @@ namespace deepdraw
     // The serial system: one process holds the whole matrix.
     std::unique_ptr<NewtonLinearSystem>
     make_serial_system(const solver::LinearSolverParameters &parameters);
+    // The system of this run: serial on one rank; under mpirun split by
+    // rows, each rank completing the rows it owns (D214).
+    std::unique_ptr<NewtonLinearSystem>
+    make_system(const solver::LinearSolverParameters &parameters);
   } // namespace linear_algebra
 } // namespace deepdraw
 

@@ -44,8 +44,9 @@ namespace deepdraw
                 Vector                                     &rhs)
         = 0;
 
-      // Each rank added its own cells (D199): the entries summed over the
-      // ranks, the same on every rank. Nothing to do on one rank.
+      // Each rank added its own cells (D199): each row's entries summed
+      // over the ranks into the rank that owns the row (D214). Nothing to
+      // do on one rank. The contact terms follow on every rank alike.
       virtual void
       sum_over_ranks()
         = 0;

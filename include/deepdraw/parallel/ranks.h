@@ -51,6 +51,16 @@ namespace deepdraw
     int
     maximum(int value);
 
+    // Each rank sends to_rank[s] to rank s and receives what rank s sent
+    // it in from_rank[s] (its own entry copied): the rows of the Newton
+    // matrix that a rank's cells added to and another rank owns (D214).
+    void
+    exchange(const std::vector<std::vector<double>> &to_rank,
+             std::vector<std::vector<double>>       &from_rank);
+    void
+    exchange(const std::vector<std::vector<unsigned long long>> &to_rank,
+             std::vector<std::vector<unsigned long long>>       &from_rank);
+
     // Returns once every rank has called it.
     void
     barrier();

@@ -49,9 +49,12 @@ namespace deepdraw
       has_kept_inverse(types::global_dof_index n) const;
 
       // Factorises `matrix` with the chosen package; back_substitute() then
-      // solves with it for any number of right-hand sides.
+      // solves with it for any number of right-hand sides. `owned`: the
+      // rows this rank gives MUMPS (empty: its share of all of them).
       void
-      factorize(const std::string &type, const SparseMatrix<double> &matrix);
+      factorize(const std::string          &type,
+                const SparseMatrix<double> &matrix,
+                const std::vector<bool>    &owned = {});
       void
       back_substitute(const Vector<double> &rhs, Vector<double> &solution);
       // Solves for each column in place (MUMPS: one pass through the
@@ -60,6 +63,10 @@ namespace deepdraw
       back_substitute(std::vector<Vector<double>> &columns);
 
       std::string type;
+      // Under mpirun, the rows of the matrices given to
+      // factorize_and_solve() that this rank owns and has complete; the
+      // others are not read (D214). Empty: every row.
+      std::vector<bool> owned_rows;
       // MUMPS scales rows and columns (the whole system, whose multiplier
       // rows are scaled unlike the displacements); not the condensed one.
       bool                 scale_matrix = true;
@@ -114,9 +121,11 @@ namespace deepdraw
       std::vector<Role>                    role;
       std::vector<bool>                    is_decoupled;
       std::vector<types::global_dof_index> reduced_index;
-      std::vector<int>                     border_position;
-      SparsityPattern                      reduced_pattern;
-      SparseMatrix<double>                 reduced_matrix;
+      // owned_rows in M's numbering.
+      std::vector<bool>    reduced_owned;
+      std::vector<int>     border_position;
+      SparsityPattern      reduced_pattern;
+      SparseMatrix<double> reduced_matrix;
       // A = [M C; D E] in the bordered unknowns b (columns of C, rows of D).
       std::vector<Vector<double>> border_columns, border_rows;
       FullMatrix<double>          corner;

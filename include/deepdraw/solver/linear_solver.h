@@ -113,13 +113,18 @@ namespace deepdraw
       // condensed system whenever it can and falls back to the whole one
       // (then `bordered` and `decoupled` apply) when not. Call again when
       // the pattern changes.
+      //
+      // `owned_rows` (under mpirun, D214): the rows of the matrices given
+      // to solve() that this rank owns and has complete; the others are
+      // not read. Empty: every row (one rank, or a replicated matrix).
       void
       set_multiplier_blocks(
         const SparsityPattern                      &pattern,
         types::global_dof_index                     n_displacements,
         const std::vector<MultiplierBlock>         &blocks,
         const std::vector<types::global_dof_index> &tool_positions,
-        const std::vector<bool>                    &constrained);
+        const std::vector<bool>                    &constrained,
+        const std::vector<bool>                    &owned_rows = {});
 
       // The next solve starts afresh: it leaves out exactly the decoupled
       // unknowns it is given and UMFPACK analyses the pattern anew (its

@@ -46,19 +46,28 @@ namespace deepdraw
       // `pattern`: the whole system's; the first n_displacements unknowns
       // are the displacements, `tool_positions` the unknowns z (bordered);
       // `constrained`: true for constrained unknowns (rows and columns with
-      // the diagonal only).
+      // the diagonal only). `owned_rows` (under mpirun, D214): the rows of
+      // the whole system this rank owns; it condenses its own nodes and
+      // pairs, and the tool rows are summed over the ranks. Empty: all.
       void
       initialize(const SparsityPattern                      &pattern,
                  types::global_dof_index                     n_displacements,
                  const std::vector<MultiplierBlock>         &blocks,
                  const std::vector<types::global_dof_index> &tool_positions,
-                 const std::vector<bool>                    &constrained);
+                 const std::vector<bool>                    &constrained,
+                 const std::vector<bool>                    &owned_rows = {});
 
       // Builds the condensed matrix and right-hand side from the whole
       // system; false if some node has two coupled pairs or a block does not
-      // have the structure above (then nothing is usable).
+      // have the structure above (then nothing is usable). Under mpirun
+      // every rank calls it and all return the same.
       bool
       condense(const SparseMatrix<double> &matrix, const Vector<double> &rhs);
+
+      // The rows of the condensed matrix this rank owns (its displacement
+      // rows; the tool rows on rank 0). Empty: all.
+      std::vector<bool>
+      owned_condensed_rows() const;
 
       const SparseMatrix<double> &
       matrix() const;
@@ -112,6 +121,15 @@ namespace deepdraw
       read_blocks(const SparseMatrix<double> &matrix,
                   unsigned int                k,
                   LocalBlocks                &local) const;
+      // condense() on this rank's rows and pairs.
+      bool
+      condense_owned(const SparseMatrix<double> &matrix,
+                     const Vector<double>       &rhs);
+      bool
+      owns(const types::global_dof_index i) const
+      {
+        return owned.empty() || owned[i];
+      }
       // Row i (no coupled pair) copied in step, the multiplier columns
       // checked to be zero; false if one is not.
       bool
@@ -121,6 +139,7 @@ namespace deepdraw
       std::vector<MultiplierBlock>         blocks;
       std::vector<types::global_dof_index> tool_position_dofs;
       std::vector<bool>                    is_constrained;
+      std::vector<bool>                    owned;
       // Block of each multiplier unknown, the pairs of each node (by its
       // first displacement dof).
       std::vector<std::vector<unsigned int>> blocks_of_node;

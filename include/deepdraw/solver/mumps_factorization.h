@@ -47,9 +47,12 @@ namespace deepdraw
       // LU factorisation of matrix, with the analysis of the last call if
       // the pattern is the same. Throws std::runtime_error (with MUMPS'
       // INFOG(1), INFOG(2)) if the matrix is singular, MumpsMemoryError if
-      // memory or workspace ran out.
+      // memory or workspace ran out. Under mpirun each rank gives the rows
+      // `owned` marks (the matrix split by rows, D214), or, if it is empty,
+      // its share of the rows of a matrix every rank holds whole.
       void
-      factorize(const SparseMatrix<double> &matrix);
+      factorize(const SparseMatrix<double> &matrix,
+                const std::vector<bool>    &owned = {});
       // Solves with the last factorisation for the columns of `rhs` (one
       // pass through the factors for all of them).
       void
@@ -82,7 +85,8 @@ namespace deepdraw
 
     private:
       void
-      set_up_pattern(const SparsityPattern &pattern);
+      set_up_pattern(const SparsityPattern   &pattern,
+                     const std::vector<bool> &owned);
       // Analyses the pattern with each ordering; keeps the cheapest.
       void
       analyse();
@@ -93,12 +97,16 @@ namespace deepdraw
 
       DMUMPS_STRUC_C data;
       // Under mpirun (D199): MPI_COMM_WORLD, each rank giving the entries
-      // of its rows, which begin at first_local_entry of the values.
-      bool                distributed       = false;
-      std::size_t         first_local_entry = 0;
-      PatternSnapshot     analysed_pattern;
-      bool                analysed          = false;
-      unsigned int        symbolic_analyses = 0;
+      // of its rows: a share of the rows that begins at first_local_entry
+      // of the values, or the rows it owns, at local_positions (D214).
+      bool                     distributed       = false;
+      std::size_t              first_local_entry = 0;
+      bool                     by_owned_rows     = false;
+      std::vector<std::size_t> local_positions;
+      std::vector<double>      local_values;
+      PatternSnapshot          analysed_pattern;
+      bool                     analysed          = false;
+      unsigned int             symbolic_analyses = 0;
       std::vector<int>    row_index, column_index; // 1-based, as MUMPS wants
       std::vector<double> right_hand_sides;
       std::vector<OrderingCandidate> candidates;

@@ -1,13 +1,15 @@
-// The serial Newton system (linear_algebra/newton_linear_system.h, D100): a
-// deal.II SparseMatrix over the whole pattern, cell matrices added through
-// the positions of their entries in the matrix's values (D99), solved by
-// solver::LinearSolver.
+// The Newton system (linear_algebra/newton_linear_system.h, D100): a deal.II
+// SparseMatrix, cell matrices added through the positions of their entries
+// in the matrix's values (D99), solved by solver::LinearSolver. Serial: the
+// whole pattern. Split by rows (D214): each rank stores the rows it holds
+// (RowPartition) and completes those it owns.
 #include <algorithm>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deepdraw/linear_algebra/newton_linear_system.h>
+#include <deepdraw/linear_algebra/row_partition.h>
 #include <deepdraw/parallel/ranks.h>
 #include <limits>
 
@@ -17,12 +19,13 @@ namespace deepdraw
   {
     namespace
     {
-      class SerialNewtonSystem : public NewtonLinearSystem, public SystemMatrix
+      class SparseNewtonSystem : public NewtonLinearSystem, public SystemMatrix
       {
       public:
-        explicit SerialNewtonSystem(
-          const solver::LinearSolverParameters &parameters)
-            : iterative(parameters.iterative())
+        SparseNewtonSystem(const solver::LinearSolverParameters &parameters,
+                           const bool                            split_by_rows)
+            : split_by_rows(split_by_rows)
+            , iterative(parameters.iterative())
             , linear_solver(parameters)
         {
         }
@@ -99,6 +102,11 @@ namespace deepdraw
                   const std::vector<types::global_dof_index> &dofs,
                   Vector                                     &rhs) override
         {
+          if (rows != nullptr && !holds_every_row(constraints, dofs))
+          {
+            add_to_held_rows(constraints, local_matrix, local_rhs, dofs, rhs);
+            return;
+          }
           // distribute_local_to_global finds each entry by walking its row
           // from the start: a contact pair of a force-controlled tool adds
           // to the tool's row, which holds every pair of the tool, so that
@@ -128,7 +136,9 @@ namespace deepdraw
         void
         sum_over_ranks() override
         {
-          if (system_matrix.n_nonzero_elements() > 0)
+          if (rows != nullptr)
+            send_rows_to_owners();
+          else if (system_matrix.n_nonzero_elements() > 0)
             parallel::sum(const_cast<double *>(&system_matrix(0, 0)),
                           system_matrix.n_nonzero_elements());
         }
@@ -142,6 +152,23 @@ namespace deepdraw
         }
 
       private:
+        // Split by rows: whether every row the local matrix adds to
+        // through the constraints is held here.
+        bool
+        holds_every_row(const AffineConstraints<double>            &constraints,
+                        const std::vector<types::global_dof_index> &dofs) const;
+        // A contact pair whose node this rank does not hold: the
+        // right-hand side whole, the matrix into the held rows (the tool's).
+        void
+        add_to_held_rows(const AffineConstraints<double> &constraints,
+                         const FullMatrix<double>        &local_matrix,
+                         const Vector                    &local_rhs,
+                         const std::vector<types::global_dof_index> &dofs,
+                         Vector                                     &rhs);
+        // After the element loop: each displacement row held here and owned
+        // elsewhere is added into its owner's (D214).
+        void
+        send_rows_to_owners();
         // cell_matrix_positions for the dofs of the layout.
         void
         find_cell_matrix_positions(const DoFHandler<3> &dof_handler);
@@ -158,18 +185,22 @@ namespace deepdraw
         // are added through them instead of searching the rows (D99).
         // Rebuilt with the sparsity pattern.
         std::vector<unsigned int> cell_matrix_positions;
-        unsigned int              dofs_per_cell = 0;
-        const DoFHandler<3>      *dof_handler   = nullptr;
+        // The first active cell of this rank's share (0 when serial).
+        unsigned int         first_cell    = 0;
+        unsigned int         dofs_per_cell = 0;
+        const DoFHandler<3> *dof_handler   = nullptr;
         // Type AMG: the component of each displacement unknown.
-        std::vector<unsigned char> components;
-        const bool                 iterative;
-        bool                       rigid_body_modes_stale = true;
-        solver::LinearSolver       linear_solver;
+        std::vector<unsigned char>    components;
+        const bool                    split_by_rows;
+        std::unique_ptr<RowPartition> rows;
+        const bool                    iterative;
+        bool                          rigid_body_modes_stale = true;
+        solver::LinearSolver          linear_solver;
       };
 
 
       void
-      SerialNewtonSystem::update_rigid_body_modes()
+      SparseNewtonSystem::update_rigid_body_modes()
       {
         // The components depend on the numbering alone: found once per
         // layout, the points once per increment.
@@ -195,7 +226,7 @@ namespace deepdraw
 
 
       void
-      SerialNewtonSystem::reinit(const SystemLayout &layout)
+      SparseNewtonSystem::reinit(const SystemLayout &layout)
       {
         const DoFHandler<3>          &dof_handler = *layout.dof_handler;
         const types::global_dof_index n_u         = dof_handler.n_dofs();
@@ -203,19 +234,31 @@ namespace deepdraw
         rigid_body_modes_stale                    = true;
         components.clear();
         const types::global_dof_index n = layout.n_unknowns;
+        // An empty row set: every row (DynamicSparsityPattern).
+        IndexSet held_rows, held_displacements;
+        if (split_by_rows)
+        {
+          rows               = std::make_unique<RowPartition>(dof_handler,
+                                                *layout.constraints,
+                                                n,
+                                                layout.multiplier_blocks);
+          held_rows          = rows->held_rows();
+          held_displacements = held_rows.get_view(0, n_u);
+        }
         // Contact unknowns follow the displacements (block system of
-        // reference Eq. 19).
-        DynamicSparsityPattern displacement_dsp(n_u, n_u);
+        // reference Eq. 19). Rows not held keep their diagonal only.
+        DynamicSparsityPattern displacement_dsp(n_u, n_u, held_displacements);
         DoFTools::make_sparsity_pattern(dof_handler,
                                         displacement_dsp,
                                         *layout.constraints,
                                         /*keep_constrained_dofs=*/true);
-        DynamicSparsityPattern dsp(n, n);
+        DynamicSparsityPattern dsp(n, n, held_rows);
         for (types::global_dof_index row = 0; row < n_u; ++row)
-          for (auto entry = displacement_dsp.begin(row);
-               entry != displacement_dsp.end(row);
-               ++entry)
-            dsp.add(row, entry->column());
+          if (rows == nullptr || rows->holds(row))
+            for (auto entry = displacement_dsp.begin(row);
+                 entry != displacement_dsp.end(row);
+                 ++entry)
+              dsp.add(row, entry->column());
         if (layout.add_contact_couplings)
           layout.add_contact_couplings(dsp);
         sparsity_pattern.copy_from(dsp);
@@ -229,13 +272,16 @@ namespace deepdraw
                                             n_u,
                                             layout.multiplier_blocks,
                                             layout.tool_positions,
-                                            constrained);
+                                            constrained,
+                                            rows == nullptr
+                                              ? std::vector<bool>()
+                                              : rows->owned_rows());
         system_rhs.reinit(n);
       }
 
 
       void
-      SerialNewtonSystem::find_cell_matrix_positions(
+      SparseNewtonSystem::find_cell_matrix_positions(
         const DoFHandler<3> &dof_handler)
       {
         const unsigned int n = dofs_per_cell;
@@ -247,16 +293,24 @@ namespace deepdraw
         AssertThrow(sparsity_pattern.n_rows() == 0
                       || sparsity_pattern(0, 0) == 0,
                     ExcInternalError());
+        // This rank's cells only (all of them when serial).
+        const auto [first, end] = parallel::owned_cells(
+          dof_handler.get_triangulation().n_active_cells());
+        first_cell = rows == nullptr ? 0 : first;
         cell_matrix_positions.resize(
-          std::size_t(dof_handler.get_triangulation().n_active_cells()) * n
-          * n);
+          std::size_t(rows == nullptr
+                        ? dof_handler.get_triangulation().n_active_cells()
+                        : end - first)
+          * n * n);
         std::vector<types::global_dof_index> dofs(n);
         for (const auto &cell : dof_handler.active_cell_iterators())
         {
+          const unsigned int index = cell->active_cell_index();
+          if (rows != nullptr && (index < first || index >= end))
+            continue;
           cell->get_dof_indices(dofs);
           unsigned int *positions
-            = &cell_matrix_positions[std::size_t(cell->active_cell_index()) * n
-                                     * n];
+            = &cell_matrix_positions[std::size_t(index - first_cell) * n * n];
           for (unsigned int i = 0; i < n; ++i)
             for (unsigned int j = 0; j < n; ++j)
             {
@@ -270,7 +324,7 @@ namespace deepdraw
 
 
       void
-      SerialNewtonSystem::add_cell_matrix(const unsigned int active_cell_index,
+      SparseNewtonSystem::add_cell_matrix(const unsigned int active_cell_index,
                                           const FullMatrix<double> &cell_matrix)
       {
         // Each entry gets the one addition that
@@ -278,7 +332,8 @@ namespace deepdraw
         // same order, so the sums are the same to the last bit (D98, D99).
         const unsigned int  n = dofs_per_cell;
         const unsigned int *positions
-          = &cell_matrix_positions[std::size_t(active_cell_index) * n * n];
+          = &cell_matrix_positions[std::size_t(active_cell_index - first_cell)
+                                   * n * n];
         double       *values = const_cast<double *>(&system_matrix(0, 0));
         const double *local  = &cell_matrix(0, 0);
         for (unsigned int k = 0; k < n * n; ++k)
@@ -286,15 +341,89 @@ namespace deepdraw
       }
 
 
+      bool
+      SparseNewtonSystem::holds_every_row(
+        const AffineConstraints<double>            &constraints,
+        const std::vector<types::global_dof_index> &dofs) const
+      {
+        for (const auto dof : dofs)
+        {
+          if (!rows->holds(dof))
+            return false;
+          if (const auto *entries = constraints.get_constraint_entries(dof))
+            for (const auto &entry : *entries)
+              if (!rows->holds(entry.first))
+                return false;
+        }
+        return true;
+      }
+
+
       void
-      SerialNewtonSystem::copy_to(FullMatrix<double> &full) const
+      SparseNewtonSystem::add_to_held_rows(
+        const AffineConstraints<double>            &constraints,
+        const FullMatrix<double>                   &local_matrix,
+        const Vector                               &local_rhs,
+        const std::vector<types::global_dof_index> &dofs,
+        Vector                                     &rhs)
+      {
+        // Every rank adds the whole right-hand side, as on one rank. The
+        // pairs whose rows are held only in part are those of a node no
+        // constraint touches (RowPartition holds constrained nodes
+        // everywhere): its constrained unknowns are fixed multipliers,
+        // whose rows and columns distribute_local_to_global leaves out.
+        constraints.distribute_local_to_global(local_rhs, dofs, rhs);
+        for (const auto dof : dofs)
+          AssertThrow(!constraints.is_constrained(dof)
+                        || (constraints.get_constraint_entries(dof)->empty()
+                            && constraints.get_inhomogeneity(dof) == 0.),
+                      ExcMessage("a contact pair at a constrained node "
+                                 "whose rows this rank does not hold"));
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          if (rows->holds(dofs[i]) && !constraints.is_constrained(dofs[i]))
+            for (unsigned int j = 0; j < dofs.size(); ++j)
+              if (local_matrix(i, j) != 0.
+                  && !constraints.is_constrained(dofs[j]))
+                system_matrix.add(dofs[i], dofs[j], local_matrix(i, j));
+      }
+
+
+      void
+      SparseNewtonSystem::send_rows_to_owners()
+      {
+        const unsigned int               n_ranks = parallel::n_ranks();
+        std::vector<std::vector<double>> to_rank(n_ranks), from_rank;
+        for (unsigned int r = 0; r < n_ranks; ++r)
+          for (const auto row : rows->rows_to_send()[r])
+            for (auto entry = system_matrix.begin(row);
+                 entry != system_matrix.end(row);
+                 ++entry)
+              to_rank[r].push_back(entry->value());
+        parallel::exchange(to_rank, from_rank);
+        // In the ranks' order: the same sums whatever the timing.
+        for (unsigned int r = 0; r < n_ranks; ++r)
+        {
+          std::size_t k = 0;
+          for (const auto row : rows->rows_to_receive()[r])
+            for (auto entry = system_matrix.begin(row);
+                 entry != system_matrix.end(row);
+                 ++entry)
+              entry->value() += from_rank[r].at(k++);
+          AssertThrow(k == from_rank[r].size(), ExcInternalError());
+        }
+      }
+
+
+      void
+      SparseNewtonSystem::copy_to(FullMatrix<double> &full) const
       {
         full.reinit(system_matrix.m(), system_matrix.n());
         for (unsigned int i = 0; i < system_matrix.m(); ++i)
-          for (auto entry = system_matrix.begin(i);
-               entry != system_matrix.end(i);
-               ++entry)
-            full(i, entry->column()) = entry->value();
+          if (rows == nullptr || rows->owns(i))
+            for (auto entry = system_matrix.begin(i);
+                 entry != system_matrix.end(i);
+                 ++entry)
+              full(i, entry->column()) = entry->value();
       }
     } // namespace
 
@@ -302,7 +431,15 @@ namespace deepdraw
     std::unique_ptr<NewtonLinearSystem>
     make_serial_system(const solver::LinearSolverParameters &parameters)
     {
-      return std::make_unique<SerialNewtonSystem>(parameters);
+      return std::make_unique<SparseNewtonSystem>(parameters, false);
+    }
+
+
+    std::unique_ptr<NewtonLinearSystem>
+    make_system(const solver::LinearSolverParameters &parameters)
+    {
+      return std::make_unique<SparseNewtonSystem>(parameters,
+                                                  parallel::n_ranks() > 1);
     }
   } // namespace linear_algebra
 } // namespace deepdraw
