@@ -7,6 +7,7 @@
 // node with pseudo-random local systems, x = 0 held by constraints so
 // that both paths are taken. Both add the same values in the same order,
 // so matrix and right-hand side must agree exactly.
+#include "sheet_with_pairs.h"
 #include "test_utilities.h"
 
 #include <cmath>
@@ -30,104 +31,21 @@
 using namespace dealii;
 using namespace deepdraw_test;
 
-namespace
-{
-  // The dofs [u (3), lambda (3), z] of each top node's pair.
-  std::vector<std::vector<types::global_dof_index>>
-  pair_dofs(const DoFHandler<3>          &dof_handler,
-            const types::global_dof_index n_u,
-            types::global_dof_index      &n_unknowns)
-  {
-    std::vector<std::vector<types::global_dof_index>> pairs;
-    std::vector<bool>                    seen(dof_handler.n_dofs(), false);
-    std::vector<types::global_dof_index> dofs(
-      dof_handler.get_fe().n_dofs_per_cell());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-    {
-      cell->get_dof_indices(dofs);
-      for (const unsigned int v : cell->vertex_indices())
-      {
-        const types::global_dof_index first = dofs[3 * v];
-        if (cell->vertex(v)[2] < 0.5 || seen[first])
-          continue;
-        seen[first] = true;
-        pairs.push_back({dofs[3 * v], dofs[3 * v + 1], dofs[3 * v + 2]});
-      }
-    }
-    const types::global_dof_index z = n_u + 3 * pairs.size();
-    for (unsigned int p = 0; p < pairs.size(); ++p)
-    {
-      for (unsigned int c = 0; c < 3; ++c)
-        pairs[p].push_back(n_u + 3 * p + c);
-      pairs[p].push_back(z);
-    }
-    n_unknowns = z + 1;
-    return pairs;
-  }
-
-  double
-  pseudo_random(const unsigned int k)
-  {
-    return std::sin(1.3 + 0.71 * k) * std::cos(0.37 * k * k);
-  }
-} // namespace
-
 int
 main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  Triangulation<3>                 mesh;
-  GridGenerator::subdivided_hyper_rectangle(mesh,
-                                            {4, 4, 1},
-                                            Point<3>(0, 0, 0),
-                                            Point<3>(4, 4, 1),
-                                            true);
-  DoFHandler<3> dof_handler(mesh);
-  dof_handler.distribute_dofs(FESystem<3>(FE_Q<3>(1), 3));
-  AffineConstraints<double> constraints;
-  VectorTools::interpolate_boundary_values(dof_handler,
-                                           0, // x = 0
-                                           Functions::ZeroFunction<3>(3),
-                                           constraints,
-                                           ComponentMask({true, false, false}));
-  constraints.close();
-
-  const types::global_dof_index n_u          = dof_handler.n_dofs();
-  types::global_dof_index       n            = 0;
-  const auto                    pairs        = pair_dofs(dof_handler, n_u, n);
-  const auto                    couple_pairs = [&](DynamicSparsityPattern &dsp)
-  {
-    for (const auto &dofs : pairs)
-      for (const auto i : dofs)
-        for (const auto j : dofs)
-          dsp.add(i, j);
-  };
-
-  deepdraw::linear_algebra::SystemLayout layout;
-  layout.dof_handler           = &dof_handler;
-  layout.constraints           = &constraints;
-  layout.n_unknowns            = n;
-  layout.add_contact_couplings = couple_pairs;
-  layout.tool_positions        = {n - 1};
+  const SheetWithPairs             sheet(4, 4, 1, 1.);
+  const auto                      &constraints = sheet.constraints;
+  const auto                      &pairs       = sheet.pairs;
+  const types::global_dof_index    n           = sheet.n_unknowns;
   const auto system = deepdraw::linear_algebra::make_serial_system({});
-  system->reinit(layout);
+  system->reinit(sheet.layout());
   system->zero(true);
 
   // The reference: the same pattern, filled by deal.II.
-  DynamicSparsityPattern dsp(n, n);
-  DynamicSparsityPattern displacement_dsp(n_u, n_u);
-  DoFTools::make_sparsity_pattern(dof_handler,
-                                  displacement_dsp,
-                                  constraints,
-                                  /*keep_constrained_dofs=*/true);
-  for (types::global_dof_index row = 0; row < n_u; ++row)
-    for (auto entry = displacement_dsp.begin(row);
-         entry != displacement_dsp.end(row);
-         ++entry)
-      dsp.add(row, entry->column());
-  couple_pairs(dsp);
   SparsityPattern pattern;
-  pattern.copy_from(dsp);
+  sheet.reference_pattern(pattern);
   SparseMatrix<double> reference(pattern);
   Vector<double>       reference_rhs(n);
 

@@ -16,6 +16,7 @@
 //   equals UMFPACK's solution of the reference (a diagonally dominant,
 //   well-conditioned matrix: measured 1.1e-16 of the largest value;
 //   allowed 1e-14, other pivot orders).
+#include "sheet_with_pairs.h"
 #include "test_utilities.h"
 
 #include <cmath>
@@ -43,12 +44,6 @@ using namespace deepdraw_test;
 
 namespace
 {
-  double
-  pseudo_random(const unsigned int k)
-  {
-    return std::sin(1.3 + 0.71 * k) * std::cos(0.37 * k * k);
-  }
-
   // A cell's matrix: pseudo-random, diagonally dominant so that the
   // assembled system is regular.
   void
@@ -63,44 +58,6 @@ namespace
         matrix(i, j) = 0.1 * pseudo_random(1000 * cell + 50 * i + j);
       matrix(i, i) += 5.;
     }
-  }
-
-  // The pairs [u (3), lambda (3), z] of the top nodes and their blocks.
-  std::vector<std::vector<types::global_dof_index>>
-  top_pairs(const DoFHandler<3>                            &dof_handler,
-            std::vector<deepdraw::solver::MultiplierBlock> &blocks,
-            types::global_dof_index                        &n_unknowns)
-  {
-    const types::global_dof_index n_u = dof_handler.n_dofs();
-    std::vector<std::vector<types::global_dof_index>> pairs;
-    std::vector<bool>                                 seen(n_u, false);
-    std::vector<types::global_dof_index>              dofs(
-      dof_handler.get_fe().n_dofs_per_cell());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-    {
-      cell->get_dof_indices(dofs);
-      for (const unsigned int v : cell->vertex_indices())
-        if (cell->vertex(v)[2] > 0.9 && !seen[dofs[3 * v]])
-        {
-          seen[dofs[3 * v]] = true;
-          pairs.push_back({dofs[3 * v], dofs[3 * v + 1], dofs[3 * v + 2]});
-        }
-    }
-    const types::global_dof_index z = n_u + 3 * pairs.size();
-    for (unsigned int p = 0; p < pairs.size(); ++p)
-    {
-      deepdraw::solver::MultiplierBlock block;
-      for (unsigned int c = 0; c < 3; ++c)
-      {
-        block.displacement[c] = pairs[p][c];
-        block.multiplier[c]   = n_u + 3 * p + c;
-        pairs[p].push_back(n_u + 3 * p + c);
-      }
-      pairs[p].push_back(z);
-      blocks.push_back(block);
-    }
-    n_unknowns = z + 1;
-    return pairs;
   }
 
   void
@@ -123,55 +80,25 @@ main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const unsigned int               n_ranks = deepdraw::parallel::n_ranks();
-  Triangulation<3>                 mesh;
-  GridGenerator::subdivided_hyper_rectangle(mesh,
-                                            {6, 6, 2},
-                                            Point<3>(0, 0, 0),
-                                            Point<3>(6, 6, 1),
-                                            true);
-  DoFHandler<3> dof_handler(mesh);
-  dof_handler.distribute_dofs(FESystem<3>(FE_Q<3>(1), 3));
-  AffineConstraints<double> constraints;
-  VectorTools::interpolate_boundary_values(dof_handler,
-                                           0, // x = 0
-                                           Functions::ZeroFunction<3>(3),
-                                           constraints,
-                                           ComponentMask({true, false, false}));
-  constraints.close();
-
-  types::global_dof_index                        n = 0;
-  std::vector<deepdraw::solver::MultiplierBlock> blocks;
-  const auto pairs        = top_pairs(dof_handler, blocks, n);
-  const auto couple_pairs = [&](DynamicSparsityPattern &dsp)
-  {
-    for (const auto &dofs : pairs)
-      for (const auto i : dofs)
-        for (const auto j : dofs)
-          dsp.add(i, j);
-  };
-  deepdraw::linear_algebra::SystemLayout layout;
-  layout.dof_handler           = &dof_handler;
-  layout.constraints           = &constraints;
-  layout.n_unknowns            = n;
-  layout.add_contact_couplings = couple_pairs;
-  layout.multiplier_blocks     = blocks;
-  layout.tool_positions        = {n - 1};
-  const auto system            = deepdraw::linear_algebra::make_system({});
-  system->reinit(layout);
+  const SheetWithPairs             sheet(6, 6, 2, 1.);
+  const auto                      &dof_handler = sheet.dof_handler;
+  const auto                      &constraints = sheet.constraints;
+  const auto                      &pairs       = sheet.pairs;
+  const auto                       n           = sheet.n_unknowns;
+  const auto system = deepdraw::linear_algebra::make_system({});
+  system->reinit(sheet.layout());
   system->zero(true);
 
   // The reference, whole on every rank.
-  DynamicSparsityPattern dsp(n, n);
-  DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, true);
-  couple_pairs(dsp);
   SparsityPattern pattern;
-  pattern.copy_from(dsp);
+  sheet.reference_pattern(pattern);
   SparseMatrix<double> reference(pattern);
   Vector<double>       reference_rhs(n);
 
   // The cells: each rank its share, as the element assembly does; the
   // right-hand side is summed over the ranks as there.
-  const auto owned = deepdraw::parallel::owned_cells(mesh.n_active_cells());
+  const auto owned
+    = deepdraw::parallel::owned_cells(sheet.mesh.n_active_cells());
   const unsigned int n_dofs = dof_handler.get_fe().n_dofs_per_cell();
   FullMatrix<double> local(n_dofs, n_dofs);
   Vector<double>     local_rhs(n_dofs);
