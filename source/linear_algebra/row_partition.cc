@@ -22,9 +22,8 @@ namespace deepdraw
 
       // A displacement row is owned by the rank of the first cell that has
       // it, and held by every rank with a cell that has it.
-      const types::global_dof_index        n_u = dof_handler.n_dofs();
-      std::vector<unsigned int>            owner(n, 0);
-      std::vector<bool>                    has_owner(n_u, false);
+      const types::global_dof_index n_u = dof_handler.n_dofs();
+      std::vector<unsigned int>     owner(n, numbers::invalid_unsigned_int);
       std::vector<types::global_dof_index> dofs(
         dof_handler.get_fe().n_dofs_per_cell());
       unsigned int rank = 0;
@@ -36,11 +35,8 @@ namespace deepdraw
         cell->get_dof_indices(dofs);
         for (const auto dof : dofs)
         {
-          if (!has_owner[dof])
-          {
-            has_owner[dof] = true;
-            owner[dof]     = rank;
-          }
+          if (owner[dof] == numbers::invalid_unsigned_int)
+            owner[dof] = rank;
           if (index >= first_cell && index < end_cell)
             held[dof] = true;
         }
@@ -71,12 +67,8 @@ namespace deepdraw
         }
       // Every other unknown (the tool positions) is held by all, owned by
       // rank 0: its row sums the pairs of a whole tool.
-      std::vector<bool> is_multiplier(n, false);
-      for (const auto &block : blocks)
-        for (const auto dof : block.multiplier)
-          is_multiplier[dof] = true;
       for (types::global_dof_index i = n_u; i < n; ++i)
-        if (!is_multiplier[i])
+        if (owner[i] == numbers::invalid_unsigned_int)
         {
           held[i]  = true;
           owner[i] = 0;

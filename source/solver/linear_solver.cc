@@ -428,6 +428,19 @@ namespace deepdraw
               dst[i] = 0.;
           parallel::sum(dst.begin(), dst.size());
         }
+
+        // |b - A x|, with r = b - A x.
+        double
+        residual(Vector<double>       &r,
+                 const Vector<double> &x,
+                 const Vector<double> &b) const
+        {
+          if (owned.empty())
+            return matrix.residual(r, x, b);
+          vmult(r, x);
+          r.sadd(-1., 1., b);
+          return r.l2_norm();
+        }
       };
 
       // An earlier matrix's factors as the preconditioner of GMRES.
@@ -479,16 +492,7 @@ namespace deepdraw
       if (!converged)
         return false;
       Vector<double> residual(matrix.m());
-      double         residual_norm = 0.;
-      if (data.owned_rows.empty())
-        residual_norm = matrix.residual(residual, solution, rhs);
-      else
-      {
-        operator_A.vmult(residual, solution);
-        residual.sadd(-1., 1., rhs);
-        residual_norm = residual.l2_norm();
-      }
-      if (!(residual_norm <= 1.01 * target))
+      if (!(operator_A.residual(residual, solution, rhs) <= 1.01 * target))
         return false;
       ++solve_statistics.reused_solves;
       return true;

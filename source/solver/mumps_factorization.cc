@@ -60,8 +60,7 @@ namespace deepdraw
       if (!initialized)
         throw std::runtime_error("MUMPS needs MPI to be initialised");
       data = DMUMPS_STRUC_C();
-      // Under mpirun every rank holds the whole matrix and MUMPS factorises
-      // across all of them (D199).
+      // Under mpirun MUMPS factorises across all the ranks (D199).
       distributed       = parallel::n_ranks() > 1;
       data.comm_fortran = static_cast<MUMPS_INT>(
         MPI_Comm_c2f(distributed ? MPI_COMM_WORLD : MPI_COMM_SELF));
@@ -87,9 +86,8 @@ namespace deepdraw
       // scaling is otherwise recomputed in every factorisation (D98).
       if (!scale)
         data.icntl[index(8)] = 0;
-      // Each rank gives its share of the rows (distributed assembled
-      // input): the host does not send the whole matrix out in every
-      // factorisation. The right-hand sides and solutions stay on the host.
+      // Each rank gives the rows it owns (distributed assembled input,
+      // D214). The right-hand sides and solutions stay on the host.
       if (distributed)
         data.icntl[index(18)] = 3;
     }
@@ -153,21 +151,20 @@ namespace deepdraw
         new_pattern = parallel::maximum(new_pattern ? 1 : 0) == 1;
       if (new_pattern)
         set_up_pattern(pattern, owned);
-      // The values in storage order are the coordinate entries of
-      // set_up_pattern: MUMPS reads them in place, during job 2 only. The
-      // first stored entry is (0, 0): a square pattern stores the diagonal
-      // first (checked in set_up_pattern).
+      // On one rank the values in storage order are the coordinate entries
+      // of set_up_pattern: MUMPS reads them in place, during job 2 only.
+      // The first stored entry is (0, 0): a square pattern stores the
+      // diagonal first (checked in set_up_pattern). Under mpirun the owned
+      // rows' values are copied out.
       double *values = pattern.n_nonzero_elements() == 0
                          ? nullptr
                          : const_cast<double *>(&matrix(0, 0));
-      if (distributed && by_owned_rows)
+      if (distributed)
       {
         for (std::size_t k = 0; k < local_positions.size(); ++k)
           local_values[k] = values[local_positions[k]];
         data.a_loc = local_values.empty() ? nullptr : local_values.data();
       }
-      else if (distributed)
-        data.a_loc = row_index.empty() ? nullptr : values + first_local_entry;
       else
         data.a = row_index.empty() ? nullptr : values;
       if (!analysed)
@@ -315,50 +312,28 @@ namespace deepdraw
                         || pattern.begin(0)->column() == 0),
                   ExcMessage("MUMPS: a compressed square pattern is needed"));
       analysed_pattern.take(pattern);
-      // This rank's rows: its share (all of them on one rank).
       const std::size_t n_rows = pattern.n_rows();
-      const auto [first_row, end_row]
-        = parallel::share(n_rows, parallel::this_rank());
-      // A square compressed pattern has no empty row (the diagonal first).
-      const auto first_entry = [&](const types::global_dof_index row)
-      {
-        return row < n_rows ? std::size_t(pattern.begin(row)->global_index())
-                            : std::size_t(pattern.n_nonzero_elements());
-      };
-      first_local_entry = first_entry(first_row);
+      // Under mpirun each rank gives the rows it owns (D214); one rank gives
+      // all, in the storage order of the values, which MUMPS reads in place.
+      AssertThrow(!distributed || owned.size() == n_rows,
+                  ExcMessage("MUMPS under mpirun: each rank gives the rows "
+                             "it owns of a matrix split by rows"));
       row_index.clear();
       column_index.clear();
       local_positions.clear();
-      by_owned_rows = distributed && !owned.empty();
-      if (by_owned_rows)
-      {
-        // The rows this rank owns, wherever they lie (D214).
-        AssertThrow(owned.size() == n_rows, ExcInternalError());
-        for (types::global_dof_index i = 0; i < n_rows; ++i)
-          if (owned[i])
-            for (auto entry = pattern.begin(i); entry != pattern.end(i);
-                 ++entry)
-            {
-              local_positions.push_back(entry->global_index());
-              row_index.push_back(i + 1);
-              column_index.push_back(entry->column() + 1);
-            }
-        local_values.resize(local_positions.size());
-      }
-      else
-      {
-        row_index.reserve(first_entry(end_row) - first_local_entry);
-        column_index.reserve(row_index.capacity());
-        std::size_t k = first_local_entry;
-        for (types::global_dof_index i = first_row; i < end_row; ++i)
-          for (auto entry = pattern.begin(i); entry != pattern.end(i);
-               ++entry, ++k)
+      for (types::global_dof_index i = 0; i < n_rows; ++i)
+        if (!distributed || owned[i])
+          for (auto entry = pattern.begin(i); entry != pattern.end(i); ++entry)
           {
-            AssertThrow(entry->global_index() == k, ExcInternalError());
+            if (distributed)
+              local_positions.push_back(entry->global_index());
+            else
+              AssertThrow(entry->global_index() == row_index.size(),
+                          ExcInternalError());
             row_index.push_back(i + 1);
             column_index.push_back(entry->column() + 1);
           }
-      }
+      local_values.resize(local_positions.size());
       data.n = n_rows;
       if (distributed)
       {

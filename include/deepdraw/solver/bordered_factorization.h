@@ -50,7 +50,7 @@ namespace deepdraw
 
       // Factorises `matrix` with the chosen package; back_substitute() then
       // solves with it for any number of right-hand sides. `owned`: the
-      // rows this rank gives MUMPS (empty: its share of all of them).
+      // rows this rank gives MUMPS (empty: all, on one rank).
       void
       factorize(const std::string          &type,
                 const SparseMatrix<double> &matrix,

@@ -48,8 +48,7 @@ namespace deepdraw
       // the pattern is the same. Throws std::runtime_error (with MUMPS'
       // INFOG(1), INFOG(2)) if the matrix is singular, MumpsMemoryError if
       // memory or workspace ran out. Under mpirun each rank gives the rows
-      // `owned` marks (the matrix split by rows, D214), or, if it is empty,
-      // its share of the rows of a matrix every rank holds whole.
+      // `owned` marks (the matrix split by rows, D214); one rank gives all.
       void
       factorize(const SparseMatrix<double> &matrix,
                 const std::vector<bool>    &owned = {});
@@ -97,11 +96,8 @@ namespace deepdraw
 
       DMUMPS_STRUC_C data;
       // Under mpirun (D199): MPI_COMM_WORLD, each rank giving the entries
-      // of its rows: a share of the rows that begins at first_local_entry
-      // of the values, or the rows it owns, at local_positions (D214).
-      bool                     distributed       = false;
-      std::size_t              first_local_entry = 0;
-      bool                     by_owned_rows     = false;
+      // of the rows it owns, found at local_positions of the values (D214).
+      bool                     distributed = false;
       std::vector<std::size_t> local_positions;
       std::vector<double>      local_values;
       PatternSnapshot          analysed_pattern;
