@@ -6,6 +6,7 @@
 #include <deepdraw/fe/hanging_node_constraints.h>
 #include <deepdraw/fe/selective_reduced_quadrature.h>
 #include <deepdraw/io/input_error.h>
+#include <deepdraw/parallel/cell_partition.h>
 #include <map>
 
 namespace deepdraw
@@ -45,6 +46,8 @@ namespace deepdraw
     void
     SheetDiscretisation::distribute_dofs()
     {
+      // Which rank evaluates which cells under mpirun (D215).
+      parallel::partition_cells(mesh);
       dofs.distribute_dofs(fe);
       // Hanging vertices of a refined mesh (doc/theory.md §8): their dofs
       // follow their masters, so they are neither prescribed nor contact

@@ -1,5 +1,6 @@
 #include <deepdraw/linear_algebra/row_partition.h>
 #include <deepdraw/parallel/ranks.h>
+#include <stdexcept>
 
 namespace deepdraw
 {
@@ -16,28 +17,22 @@ namespace deepdraw
     {
       const unsigned int n_ranks = parallel::n_ranks();
       const unsigned int me      = parallel::this_rank();
-      const unsigned int n_cells
-        = dof_handler.get_triangulation().n_active_cells();
-      const auto [first_cell, end_cell] = parallel::owned_cells(n_cells);
-
       // A displacement row is owned by the rank of the first cell that has
-      // it, and held by every rank with a cell that has it.
+      // it (the cells' subdomain ids, D215), and held by every rank with a
+      // cell that has it.
       const types::global_dof_index n_u = dof_handler.n_dofs();
       std::vector<unsigned int>     owner(n, numbers::invalid_unsigned_int);
       std::vector<types::global_dof_index> dofs(
         dof_handler.get_fe().n_dofs_per_cell());
-      unsigned int rank = 0;
       for (const auto &cell : dof_handler.active_cell_iterators())
       {
-        const unsigned int index = cell->active_cell_index();
-        while (parallel::share(n_cells, rank).second <= index)
-          ++rank;
+        const unsigned int rank = cell->subdomain_id();
         cell->get_dof_indices(dofs);
         for (const auto dof : dofs)
         {
           if (owner[dof] == numbers::invalid_unsigned_int)
             owner[dof] = rank;
-          if (index >= first_cell && index < end_cell)
+          if (rank == me)
             held[dof] = true;
         }
       }
@@ -82,6 +77,10 @@ namespace deepdraw
           held_set.add_index(i);
       }
       held_set.compress();
+      // FNV-1a of the owners, compared across the ranks at the first
+      // exchange: every rank partitions the cells itself (D215).
+      for (const unsigned int rank : owner)
+        owners_fingerprint = (owners_fingerprint ^ rank) * 1099511628211ULL;
 
       // Only cells add before the exchange: displacement rows.
       to_owner.assign(n_ranks, {});
@@ -98,6 +97,13 @@ namespace deepdraw
       // rank 0's commands alone (--check) never make (D199).
       if (from_rank.empty())
       {
+        unsigned long long root_fingerprint = owners_fingerprint;
+        parallel::broadcast(&root_fingerprint, sizeof(root_fingerprint));
+        if (parallel::maximum(root_fingerprint != owners_fingerprint) != 0)
+          throw std::runtime_error(
+            "the ranks divided the cells differently (METIS gave another "
+            "partition on some rank); run on one rank or report the MPI "
+            "set-up");
         std::vector<std::vector<unsigned long long>> sent(to_owner.size()),
           received;
         for (unsigned int r = 0; r < to_owner.size(); ++r)

@@ -10,6 +10,7 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deepdraw/linear_algebra/newton_linear_system.h>
 #include <deepdraw/linear_algebra/row_partition.h>
+#include <deepdraw/parallel/cell_partition.h>
 #include <deepdraw/parallel/ranks.h>
 #include <limits>
 
@@ -172,6 +173,12 @@ namespace deepdraw
         // cell_matrix_positions for the dofs of the layout.
         void
         find_cell_matrix_positions(const DoFHandler<3> &dof_handler);
+        unsigned int
+        slot(const unsigned int active_cell_index) const
+        {
+          return cell_slot.empty() ? active_cell_index
+                                   : cell_slot[active_cell_index];
+        }
         // Type AMG: the support points of the displacement unknowns in the
         // mesh's current configuration, for the rigid-body modes (D193).
         void
@@ -185,10 +192,12 @@ namespace deepdraw
         // are added through them instead of searching the rows (D99).
         // Rebuilt with the sparsity pattern.
         std::vector<unsigned int> cell_matrix_positions;
-        // The first active cell of this rank's share (0 when serial).
-        unsigned int         first_cell    = 0;
-        unsigned int         dofs_per_cell = 0;
-        const DoFHandler<3> *dof_handler   = nullptr;
+        // Under mpirun, the place in cell_matrix_positions of each of this
+        // rank's cells, by active cell index (empty when serial: all cells
+        // in their order).
+        std::vector<unsigned int> cell_slot;
+        unsigned int              dofs_per_cell = 0;
+        const DoFHandler<3>      *dof_handler   = nullptr;
         // Type AMG: the component of each displacement unknown.
         std::vector<unsigned char>    components;
         const bool                    split_by_rows;
@@ -294,23 +303,29 @@ namespace deepdraw
                       || sparsity_pattern(0, 0) == 0,
                     ExcInternalError());
         // This rank's cells only (all of them when serial).
-        const auto [first, end] = parallel::owned_cells(
-          dof_handler.get_triangulation().n_active_cells());
-        first_cell = rows == nullptr ? 0 : first;
-        cell_matrix_positions.resize(
-          std::size_t(rows == nullptr
-                        ? dof_handler.get_triangulation().n_active_cells()
-                        : end - first)
-          * n * n);
+        const auto &mesh = dof_handler.get_triangulation();
+        cell_slot.clear();
+        unsigned int n_cells = mesh.n_active_cells();
+        if (rows != nullptr)
+        {
+          cell_slot.assign(mesh.n_active_cells(),
+                           numbers::invalid_unsigned_int);
+          n_cells = 0;
+          for (const auto &cell : mesh.active_cell_iterators())
+            if (parallel::is_owned(*cell))
+              cell_slot[cell->active_cell_index()] = n_cells++;
+        }
+        cell_matrix_positions.resize(std::size_t(n_cells) * n * n);
         std::vector<types::global_dof_index> dofs(n);
         for (const auto &cell : dof_handler.active_cell_iterators())
         {
-          const unsigned int index = cell->active_cell_index();
-          if (rows != nullptr && (index < first || index >= end))
+          if (rows != nullptr && !parallel::is_owned(*cell))
             continue;
           cell->get_dof_indices(dofs);
           unsigned int *positions
-            = &cell_matrix_positions[std::size_t(index - first_cell) * n * n];
+            = &cell_matrix_positions[std::size_t(
+                                       slot(cell->active_cell_index()))
+                                     * n * n];
           for (unsigned int i = 0; i < n; ++i)
             for (unsigned int j = 0; j < n; ++j)
             {
@@ -332,8 +347,8 @@ namespace deepdraw
         // same order, so the sums are the same to the last bit (D98, D99).
         const unsigned int  n = dofs_per_cell;
         const unsigned int *positions
-          = &cell_matrix_positions[std::size_t(active_cell_index - first_cell)
-                                   * n * n];
+          = &cell_matrix_positions[std::size_t(slot(active_cell_index)) * n
+                                   * n];
         double       *values = const_cast<double *>(&system_matrix(0, 0));
         const double *local  = &cell_matrix(0, 0);
         for (unsigned int k = 0; k < n * n; ++k)

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cstring>
 #include <deal.II/base/mpi.h>
 #include <deepdraw/parallel/ranks.h>
 #include <mpi.h>
@@ -71,23 +72,6 @@ namespace deepdraw
         return static_cast<unsigned int>(size);
       }();
       return count;
-    }
-
-
-    std::pair<std::size_t, std::size_t>
-    share(const std::size_t n_items, const unsigned int rank)
-    {
-      const unsigned long long n = n_ranks();
-      return {n_items * rank / n, n_items * (rank + 1ULL) / n};
-    }
-
-
-    std::pair<unsigned int, unsigned int>
-    owned_cells(const unsigned int n_active_cells)
-    {
-      const auto cells = share(n_active_cells, this_rank());
-      return {static_cast<unsigned int>(cells.first),
-              static_cast<unsigned int>(cells.second)};
     }
 
 
@@ -232,24 +216,51 @@ namespace deepdraw
 
 
     void
-    broadcast(void *data, const std::size_t bytes)
+    broadcast(void *data, const std::size_t bytes, const unsigned int root)
     {
       if (n_ranks() > 1)
-        broadcast_from(data, bytes, 0);
+        broadcast_from(data, bytes, root);
     }
 
 
     void
-    gather_owned_bytes(void              *data,
-                       const std::size_t  bytes_per_cell,
-                       const unsigned int n_cells)
+    gather_from_owners(void                            *data,
+                       const std::size_t                bytes_per_owner,
+                       const std::vector<unsigned int> &owners)
     {
+      char *const        bytes = static_cast<char *>(data);
+      std::vector<char>  packed;
+      const unsigned int me = this_rank();
       for (unsigned int rank = 0; rank < n_ranks(); ++rank)
       {
-        const auto [first, end] = share(n_cells, rank);
-        broadcast_from(static_cast<char *>(data) + first * bytes_per_cell,
-                       (end - first) * bytes_per_cell,
-                       rank);
+        std::size_t n_records = 0;
+        for (const unsigned int owner : owners)
+          n_records += owner == rank;
+        packed.resize(n_records * bytes_per_owner);
+        // The owner packs its records in their order, and every other rank
+        // unpacks them in the same order.
+        std::size_t position = 0;
+        for (std::size_t i = 0; i < owners.size(); ++i)
+          if (owners[i] == rank)
+          {
+            if (rank == me)
+              std::memcpy(packed.data() + position,
+                          bytes + i * bytes_per_owner,
+                          bytes_per_owner);
+            position += bytes_per_owner;
+          }
+        broadcast(packed.data(), packed.size(), rank);
+        if (rank == me)
+          continue;
+        position = 0;
+        for (std::size_t i = 0; i < owners.size(); ++i)
+          if (owners[i] == rank)
+          {
+            std::memcpy(bytes + i * bytes_per_owner,
+                        packed.data() + position,
+                        bytes_per_owner);
+            position += bytes_per_owner;
+          }
       }
     }
   } // namespace parallel

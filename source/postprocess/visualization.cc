@@ -16,6 +16,7 @@
 #include <deepdraw/io/printable_text.h>
 #include <deepdraw/io/pvd_record.h>
 #include <deepdraw/io/writing_rank.h>
+#include <deepdraw/parallel/cell_partition.h>
 #include <deepdraw/parallel/ranks.h>
 #include <deepdraw/postprocess/interface.h>
 #include <deepdraw/postprocess/vtu_field.h>
@@ -252,18 +253,12 @@ namespace deepdraw
         DataOut<3> data_out;
         data_out.attach_triangulation(simulation.sheet().triangulation());
         // Under mpirun each rank writes the cells whose elements it
-        // evaluates, and rank 0 a .pvtu record of the pieces (D201).
+        // evaluates, and rank 0 a .pvtu record of the pieces (D201, D215).
         const unsigned int ranks = parallel::n_ranks();
-        const auto         owned = parallel::owned_cells(
-          simulation.sheet().triangulation().n_active_cells());
         if (ranks > 1)
           data_out.set_cell_selection(
-            [owned](const typename Triangulation<3>::cell_iterator &cell)
-            {
-              return cell->is_active()
-                     && cell->active_cell_index() >= owned.first
-                     && cell->active_cell_index() < owned.second;
-            });
+            [](const typename Triangulation<3>::cell_iterator &cell)
+            { return cell->is_active() && parallel::is_owned(*cell); });
         for (const VtuData::Field &field : data.fields())
         {
           io::check_finite_for_output(

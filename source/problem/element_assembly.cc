@@ -2,7 +2,7 @@
 #include <atomic>
 #include <deal.II/base/work_stream.h>
 #include <deepdraw/fe/selective_reduced_quadrature.h>
-#include <deepdraw/parallel/ranks.h>
+#include <deepdraw/parallel/cell_partition.h>
 #include <deepdraw/problem/element_assembly.h>
 
 namespace deepdraw
@@ -49,20 +49,18 @@ namespace deepdraw
       std::atomic<int>          worst_status{0};
       std::atomic<unsigned int> plastic_points{0};
       std::atomic<unsigned int> pending_elements{0};
-      // Under mpirun each rank evaluates its share of the cells; the sums
+      // Under mpirun each rank evaluates its own cells (D215); the sums
       // over the ranks follow the loop (D199).
-      const auto owned = parallel::owned_cells(
-        sheet.dof_handler().get_triangulation().n_active_cells());
 
       auto worker
         = [&](const typename DoFHandler<3>::active_cell_iterator &cell,
               AssemblyScratch                                    &scratch,
               AssemblyCopy                                       &copy)
       {
-        copy.active              = false;
-        const unsigned int index = cell->active_cell_index();
-        if (index < owned.first || index >= owned.second)
+        copy.active = false;
+        if (!parallel::is_owned(*cell))
           return;
+        const unsigned int index = cell->active_cell_index();
         cell->get_dof_indices(copy.dofs);
         copy.cell_index = index;
         double cell_du[fe::dofs_per_cell];

@@ -5,7 +5,7 @@
 #include <deepdraw/blank/nodal_surface_area.h>
 #include <deepdraw/fe/selective_reduced_quadrature.h>
 #include <deepdraw/io/input_error.h>
-#include <deepdraw/parallel/ranks.h>
+#include <deepdraw/parallel/cell_partition.h>
 #include <deepdraw/problem/sheet_model.h>
 
 namespace deepdraw
@@ -301,10 +301,12 @@ namespace deepdraw
     void
     SheetModel::gather_trial_state()
     {
-      const unsigned int n_cells
-        = discretisation.triangulation().n_active_cells();
-      parallel::gather_owned_cells(trial_history, n_cells);
-      parallel::gather_owned_cells(trial_enhanced_parameters, n_cells);
+      if (parallel::n_ranks() == 1)
+        return;
+      const std::vector<unsigned int> owners
+        = parallel::cell_owners(discretisation.triangulation());
+      parallel::gather_from_owners(trial_history, owners);
+      parallel::gather_from_owners(trial_enhanced_parameters, owners);
     }
 
 

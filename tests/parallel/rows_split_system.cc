@@ -1,6 +1,6 @@
 // The Newton system split by rows under mpirun (D214), run on 3 ranks: each
-// rank adds the cells of its share, the rows it holds and does not own go
-// to their owners, and the contact pairs are added on every rank alike.
+// rank adds its cells (METIS's partition, D215), the rows it holds and does not
+// own go to their owners, and the contact pairs are added on every rank alike.
 // Checked against the whole system assembled by deal.II on every rank:
 // 6 x 6 x 2 hexahedra, x = 0 held by constraints, one pair [u (3),
 // lambda (3), z] per top node with pseudo-random local systems (so that
@@ -35,8 +35,10 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/numerics/vector_tools.h>
 #include <deepdraw/linear_algebra/newton_linear_system.h>
+#include <deepdraw/parallel/cell_partition.h>
 #include <deepdraw/parallel/ranks.h>
 #include <iostream>
+#include <map>
 #include <vector>
 
 using namespace dealii;
@@ -80,12 +82,32 @@ main(int argc, char *argv[])
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const unsigned int               n_ranks = deepdraw::parallel::n_ranks();
-  const SheetWithPairs             sheet(6, 6, 2, 1.);
-  const auto                      &dof_handler = sheet.dof_handler;
-  const auto                      &constraints = sheet.constraints;
-  const auto                      &pairs       = sheet.pairs;
-  const auto                       n           = sheet.n_unknowns;
-  const auto system = deepdraw::linear_algebra::make_system({});
+  SheetWithPairs                   sheet(6, 6, 2, 1.);
+  // The cells divided among the ranks as in a run (METIS, D215).
+  deepdraw::parallel::partition_cells(sheet.mesh);
+  const std::vector<unsigned int> owners_of_cells
+    = deepdraw::parallel::cell_owners(sheet.mesh);
+  // METIS cuts the fewest faces: between columns of cells (12 faces per
+  // cut line of 6 columns), never between the two layers (36 faces). Every
+  // column is on one rank, and the ranks' cells differ by a few at most.
+  std::map<std::pair<long, long>, unsigned int> column_owner;
+  bool                                          columns_whole = true;
+  std::vector<unsigned int>                     cells_of_rank(n_ranks, 0);
+  for (const auto &cell : sheet.mesh.active_cell_iterators())
+  {
+    const Point<3>              centre = cell->center();
+    const std::pair<long, long> column{std::lround(centre[0] * 1e6),
+                                       std::lround(centre[1] * 1e6)};
+    const unsigned int          owner = cell->subdomain_id();
+    const auto [entry, added]         = column_owner.emplace(column, owner);
+    columns_whole                     = columns_whole && entry->second == owner;
+    ++cells_of_rank[owner];
+  }
+  const auto &dof_handler = sheet.dof_handler;
+  const auto &constraints = sheet.constraints;
+  const auto &pairs       = sheet.pairs;
+  const auto  n           = sheet.n_unknowns;
+  const auto  system      = deepdraw::linear_algebra::make_system({});
   system->reinit(sheet.layout());
   system->zero(true);
 
@@ -95,10 +117,8 @@ main(int argc, char *argv[])
   SparseMatrix<double> reference(pattern);
   Vector<double>       reference_rhs(n);
 
-  // The cells: each rank its share, as the element assembly does; the
+  // The cells: each rank its own, as the element assembly does; the
   // right-hand side is summed over the ranks as there.
-  const auto owned
-    = deepdraw::parallel::owned_cells(sheet.mesh.n_active_cells());
   const unsigned int n_dofs = dof_handler.get_fe().n_dofs_per_cell();
   FullMatrix<double> local(n_dofs, n_dofs);
   Vector<double>     local_rhs(n_dofs);
@@ -113,7 +133,7 @@ main(int argc, char *argv[])
                                            dofs,
                                            reference,
                                            reference_rhs);
-    if (index >= owned.first && index < owned.second)
+    if (deepdraw::parallel::is_owned(*cell))
       system->matrix().add_local(constraints,
                                  local,
                                  local_rhs,
@@ -176,6 +196,12 @@ main(int argc, char *argv[])
     std::cout << n_ranks << " ranks, " << n << " unknowns, " << pairs.size()
               << " pairs\n";
     check_true("run on 3 ranks", n_ranks == 3);
+    check_true("every column of cells on one rank", columns_whole);
+    for (unsigned int r = 0; r < n_ranks; ++r)
+      check_close("cells of rank " + std::to_string(r),
+                  cells_of_rank[r],
+                  72. / n_ranks,
+                  2.);
     check_true("each row owned by exactly one rank",
                fewest_owners == 1. && most_owners == 1.);
     check_true("the matrix was filled", largest > 1.);

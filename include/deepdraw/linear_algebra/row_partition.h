@@ -62,7 +62,8 @@ namespace deepdraw
       {
         return to_owner;
       }
-      // Collective at its first call.
+      // Collective at its first call, which also checks that every rank
+      // divided the cells alike (std::runtime_error if not).
       const std::vector<std::vector<types::global_dof_index>> &
       rows_to_receive();
 
@@ -70,6 +71,7 @@ namespace deepdraw
       std::vector<bool>                                 held, owned;
       IndexSet                                          held_set;
       std::vector<std::vector<types::global_dof_index>> to_owner, from_rank;
+      unsigned long long owners_fingerprint = 14695981039346656037ULL;
     };
   } // namespace linear_algebra
 } // namespace deepdraw

@@ -1,16 +1,16 @@
 // The MPI ranks of a run (doc/architecture.md, "Parallel runs", D199).
 // Every rank holds the whole model (mesh, state, Newton vectors) and takes
 // every decision itself; what is split is the work: each rank evaluates
-// the elements of its share of the cells, and MUMPS factorises across all
-// ranks. So that the ranks take the same decisions, every sum over ranks
-// gives the same bits on every rank (reduced on rank 0, then broadcast).
-// With one rank every function here returns at once and changes nothing.
+// the elements of its cells (parallel/cell_partition.h) and completes the
+// Newton rows it owns, and MUMPS factorises across all ranks. So that the ranks
+// take the same decisions, every sum over ranks gives the same bits on every
+// rank (reduced on rank 0, then broadcast). With one rank every function here
+// returns at once and changes nothing.
 #ifndef deepdraw_parallel_ranks_h
 #define deepdraw_parallel_ranks_h
 
 #include <cstddef>
 #include <type_traits>
-#include <utility>
 #include <vector>
 
 namespace deepdraw
@@ -31,17 +31,6 @@ namespace deepdraw
     // that every rank makes (start_ranks makes it); 1 without MPI.
     unsigned int
     ranks_on_this_machine();
-
-    // Rank `rank`'s share [first, second) of n_items numbered items:
-    // contiguous, in the ranks' order, their sizes differing by at most one
-    // (all of them on one rank).
-    std::pair<std::size_t, std::size_t>
-    share(std::size_t n_items, unsigned int rank);
-
-    // The active cells [first, second) whose elements this rank
-    // evaluates: its share of the active-cell numbering.
-    std::pair<unsigned int, unsigned int>
-    owned_cells(unsigned int n_active_cells);
 
     // values[i] summed over the ranks, the same bits on every rank.
     void
@@ -65,30 +54,34 @@ namespace deepdraw
     void
     barrier();
 
-    // Every rank receives rank 0's bytes.
+    // Every rank receives rank root's bytes.
     void
-    broadcast(void *data, std::size_t bytes);
+    broadcast(void *data, std::size_t bytes, unsigned int root = 0);
 
-    // Each rank's entries of per_cell_items, those of its owned_cells
-    // (n_cells), sent to every other rank.
+    // Records computed by their owners, sent to every rank in place: data
+    // holds bytes_per_owner bytes for each i of owners, computed by rank
+    // owners[i] (a cell's trial state, D215).
     void
-    gather_owned_bytes(void        *data,
-                       std::size_t  bytes_per_cell,
-                       unsigned int n_cells);
+    gather_from_owners(void                            *data,
+                       std::size_t                      bytes_per_owner,
+                       const std::vector<unsigned int> &owners);
 
+    // The same for a vector of items, items.size() / owners.size() items
+    // for each owner; nothing with one rank.
     template <typename T>
     void
-    gather_owned_cells(std::vector<T>    &per_cell_items,
-                       const unsigned int n_cells)
+    gather_from_owners(std::vector<T>                  &items,
+                       const std::vector<unsigned int> &owners)
     {
       static_assert(std::is_trivially_copyable<T>::value,
-                    "cell records are sent as bytes");
-      if (n_ranks() == 1 || per_cell_items.empty())
+                    "records are sent as bytes");
+      if (n_ranks() == 1 || items.empty())
         return;
-      gather_owned_bytes(per_cell_items.data(),
-                         sizeof(T) * (per_cell_items.size() / n_cells),
-                         n_cells);
+      gather_from_owners(items.data(),
+                         sizeof(T) * (items.size() / owners.size()),
+                         owners);
     }
+
   } // namespace parallel
 } // namespace deepdraw
 
