@@ -12,6 +12,7 @@
 #include <deepdraw/contact/contact_coupling.h>
 #include <deepdraw/io/input_error.h>
 #include <deepdraw/io/printable_text.h>
+#include <deepdraw/parallel/ranks.h>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
@@ -117,9 +118,11 @@ namespace deepdraw
       const std::vector<std::array<types::global_dof_index, 3>> &vertex_dofs,
       const types::global_dof_index                              first_index,
       const double                                               youngs_modulus,
-      const double                                               element_size)
+      const double                                               element_size,
+      const std::vector<unsigned int>                           &vertex_owners)
     {
       pairs.clear();
+      pair_owners.clear();
       const double r = parameters.augmentation(youngs_modulus, element_size);
       force_regularisation         = r;
       types::global_dof_index next = first_index;
@@ -136,6 +139,8 @@ namespace deepdraw
           pair.augmentation     = r;
           next += 3;
           pairs.push_back(pair);
+          if (!vertex_owners.empty())
+            pair_owners.push_back(vertex_owners[vertex]);
         }
       position_dof.assign(definitions.size(), numbers::invalid_dof_index);
       for (unsigned int k = 0; k < definitions.size(); ++k)
@@ -310,20 +315,27 @@ namespace deepdraw
         }
 
       // Projection and local law of every pair, independent of each other:
-      // on all threads (D61).
+      // on all threads (D61). Under mpirun each rank evaluates the pairs of
+      // the nodes whose rows it owns and sends them to the others, so that
+      // every rank adds every pair as before (D216).
       std::vector<unsigned char> changed(pairs.size(), 0);
+      const unsigned int         me = parallel::this_rank();
       const auto                 evaluate_pairs
         = [&](const std::size_t begin, const std::size_t end)
       {
         for (std::size_t p = begin; p < end; ++p)
-          changed[p] = evaluate_pair(pairs[p], positions, solution, predictor);
+          if (pair_owners.empty() || pair_owners[p] == me)
+            changed[p]
+              = evaluate_pair(pairs[p], positions, solution, predictor);
       };
-      parallel::apply_to_subranges(std::size_t(0),
-                                   pairs.size(),
-                                   evaluate_pairs,
-                                   64);
+      dealii::parallel::apply_to_subranges(std::size_t(0),
+                                           pairs.size(),
+                                           evaluate_pairs,
+                                           64);
+      exchange_pair_outcomes(solution);
       const unsigned int changes
-        = std::count(changed.begin(), changed.end(), 1);
+        = parallel::sum(static_cast<unsigned long long>(
+          std::count(changed.begin(), changed.end(), 1)));
 
       // Local systems [u (3), lambda (3), z (0 or 1)], residual
       // r = [-P, F_sup, a.P]; rhs = -r (doc/theory_contact.md, reference Eq.

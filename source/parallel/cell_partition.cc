@@ -111,5 +111,19 @@ namespace deepdraw
         owners[cell->active_cell_index()] = cell->subdomain_id();
       return owners;
     }
+
+
+    std::vector<unsigned int>
+    vertex_owners(const dealii::Triangulation<3> &mesh)
+    {
+      std::vector<unsigned int> owners(mesh.n_vertices(),
+                                       dealii::numbers::invalid_unsigned_int);
+      for (const auto &cell : mesh.active_cell_iterators())
+        for (const unsigned int v : cell->vertex_indices())
+          if (owners[cell->vertex_index(v)]
+              == dealii::numbers::invalid_unsigned_int)
+            owners[cell->vertex_index(v)] = cell->subdomain_id();
+      return owners;
+    }
   } // namespace parallel
 } // namespace deepdraw

@@ -79,7 +79,11 @@ namespace deepdraw
                                            discretisation.vertex_dofs(),
                                            n_u,
                                            parameters.material.youngs_modulus,
-                                           discretisation.blank_element_size());
+                                           discretisation.blank_element_size(),
+                                           parallel::n_ranks() > 1
+                                             ? parallel::vertex_owners(
+                                               discretisation.triangulation())
+                                             : std::vector<unsigned int>());
       linear_algebra::SystemLayout layout;
       layout.multiplier_blocks = contact_coupling.multiplier_blocks();
       newton_constraints.set_up(discretisation,

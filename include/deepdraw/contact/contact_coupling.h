@@ -159,14 +159,17 @@ namespace deepdraw
       // One pair per (vertex on the tool's sheet face, tool). vertex_dofs
       // gives the 3 displacement dofs of a vertex; unknowns of the
       // multipliers and tool positions are numbered from first_index.
+      // Under mpirun vertex_owners gives the rank that evaluates the pairs
+      // of each vertex (parallel::vertex_owners; empty: this one, D216).
       // Returns the number of unknowns added.
       unsigned int
       create_pairs(
         const std::vector<std::vector<unsigned int>> &face_vertices,
         const std::vector<std::array<types::global_dof_index, 3>> &vertex_dofs,
         types::global_dof_index                                    first_index,
-        double youngs_modulus,
-        double element_size);
+        double                           youngs_modulus,
+        double                           element_size,
+        const std::vector<unsigned int> &vertex_owners = {});
 
       void
       add_sparsity(DynamicSparsityPattern &dsp) const;
@@ -392,6 +395,12 @@ namespace deepdraw
                     const std::vector<Point<3>> &positions,
                     const Vector<double>        &solution,
                     bool                         predictor) const;
+      // Under mpirun: every rank receives the outcome (found, state,
+      // result) of the pairs the other ranks evaluated; an open pair's as
+      // its normal gap only, the rest follows from its multiplier in
+      // `solution` (contact_coupling_ranks.cc, D216).
+      void
+      exchange_pair_outcomes(const Vector<double> &solution);
 
       contact::ContactParameters  parameters;
       double                      search_distance = 2.;
@@ -405,10 +414,13 @@ namespace deepdraw
       std::vector<types::global_dof_index> position_dof;
       std::vector<double>                  position_at_start; // z_n
       // Spring-backed tools: the spring's force at the last assembly (N).
-      std::vector<double>                       spring_forces;
-      std::vector<Tensor<1, 3>>                 translation_at_start;
-      std::vector<Tensor<1, 3>>                 translation_at_end;
-      std::vector<Pair>                         pairs;
+      std::vector<double>       spring_forces;
+      std::vector<Tensor<1, 3>> translation_at_start;
+      std::vector<Tensor<1, 3>> translation_at_end;
+      std::vector<Pair>         pairs;
+      // Under mpirun, the rank that evaluates each pair (empty when
+      // serial).
+      std::vector<unsigned int>                 pair_owners;
       std::unique_ptr<contact::AlartCurnierLaw> law;
       double                                    force_regularisation = 1.;
       double                                    total_contact_time   = 0.;

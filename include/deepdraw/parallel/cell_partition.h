@@ -34,6 +34,12 @@ namespace deepdraw
     {
       return cell.subdomain_id() == this_rank();
     }
+
+    // The rank of every vertex: that of the first active cell (in the
+    // active-cell order) that has it, the owner of its rows (D214) and the
+    // rank that evaluates its contact pairs (D216).
+    std::vector<unsigned int>
+    vertex_owners(const dealii::Triangulation<3> &mesh);
   } // namespace parallel
 } // namespace deepdraw
 

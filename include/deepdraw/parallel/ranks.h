@@ -67,7 +67,7 @@ namespace deepdraw
                        const std::vector<unsigned int> &owners);
 
     // The same for a vector of items, items.size() / owners.size() items
-    // for each owner; nothing with one rank.
+    // for each owner; nothing with one rank or no owners.
     template <typename T>
     void
     gather_from_owners(std::vector<T>                  &items,
@@ -75,7 +75,7 @@ namespace deepdraw
     {
       static_assert(std::is_trivially_copyable<T>::value,
                     "records are sent as bytes");
-      if (n_ranks() == 1 || items.empty())
+      if (n_ranks() == 1 || items.empty() || owners.empty())
         return;
       gather_from_owners(items.data(),
                          sizeof(T) * (items.size() / owners.size()),
