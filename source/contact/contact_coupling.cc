@@ -278,12 +278,9 @@ namespace deepdraw
       else
       {
         // Far from the tool: open, F_sup = lambda / r.
-        pair.result                     = contact::ContactPairResult();
-        pair.result.state               = contact::ContactState::open;
-        pair.result.constraint_residual = lambda / pair.augmentation;
-        pair.result.dconstraint_dmultiplier
-          = Tensor<2, 3>(unit_symmetric_tensor<3>()) / pair.augmentation;
-        pair.result.normal_gap = search_distance;
+        pair.result = contact::open_contact_pair(lambda,
+                                                 pair.augmentation,
+                                                 search_distance);
       }
       return was_found != pair.found || previous_state != pair.result.state;
     }

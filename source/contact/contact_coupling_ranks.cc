@@ -79,16 +79,15 @@ namespace deepdraw
               next = read(next, pair.result);
               continue;
             }
-            // Open: P = 0, F_sup = λ/r (the law's open branch and the pair
-            // beyond the search distance alike, evaluate_pair()).
+            // Open: the law's open branch and the pair beyond the search
+            // distance alike (evaluate_pair()).
             Tensor<1, 3> lambda;
+            double       normal_gap = 0.;
             for (unsigned int c = 0; c < 3; ++c)
               lambda[c] = solution[pair.first_multiplier + c];
-            pair.result                     = ContactPairResult();
-            pair.result.constraint_residual = lambda / pair.augmentation;
-            pair.result.dconstraint_dmultiplier
-              = Tensor<2, 3>(unit_symmetric_tensor<3>()) / pair.augmentation;
-            next = read(next, pair.result.normal_gap);
+            next = read(next, normal_gap);
+            pair.result
+              = open_contact_pair(lambda, pair.augmentation, normal_gap);
           }
       }
     }

@@ -1,9 +1,26 @@
+#include <deal.II/base/symmetric_tensor.h>
 #include <deepdraw/contact/contact_pair.h>
 
 namespace deepdraw
 {
   namespace contact
   {
+    ContactPairResult
+    open_contact_pair(const dealii::Tensor<1, 3> &multiplier,
+                      const double                augmentation,
+                      const double                normal_gap)
+    {
+      ContactPairResult result;
+      result.state               = ContactState::open;
+      result.constraint_residual = multiplier / augmentation;
+      result.dconstraint_dmultiplier
+        = dealii::Tensor<2, 3>(dealii::unit_symmetric_tensor<3>())
+          / augmentation;
+      result.normal_gap = normal_gap;
+      return result;
+    }
+
+
     ContactPairResult
     evaluate_contact_pair(const AlartCurnierLaw       &law,
                           const ContactPairKinematics &kinematics,

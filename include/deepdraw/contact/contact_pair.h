@@ -44,6 +44,14 @@ namespace deepdraw
       dealii::Tensor<1, 3> friction_force;
     };
 
+    // An open pair (beyond the search distance, or on the law's open branch
+    // with the tool's derivatives all zero): P = 0, F_sup = λ/r,
+    // dF_sup/dλ = I/r; normal_gap for the output.
+    ContactPairResult
+    open_contact_pair(const dealii::Tensor<1, 3> &multiplier,
+                      double                      augmentation,
+                      double                      normal_gap);
+
     // Chain rule: d(·)/dΔu = ∂(·)/∂ĝ dĝ/dΔu + ∂(·)/∂n dn/dΔu, same for z.
     ContactPairResult
     evaluate_contact_pair(const AlartCurnierLaw       &law,

@@ -81,7 +81,6 @@ namespace deepdraw
                          sizeof(T) * (items.size() / owners.size()),
                          owners);
     }
-
   } // namespace parallel
 } // namespace deepdraw
 
