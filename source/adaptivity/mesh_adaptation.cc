@@ -172,7 +172,7 @@ namespace deepdraw
       std::vector<double> result;
       if (parameters.indicator != "tool curvature")
       {
-        result = plastic_strain_jump(mesh, state.history);
+        result = plastic_strain_jump(mesh, sheet.owned_cells(), state.history);
         // In-plane refinement with the smooth placement refines whole
         // columns (D89); the tool-curvature indicator does so itself.
         if (parameters.refinement == "in_plane"

@@ -10,13 +10,15 @@ namespace deepdraw
   {
     std::vector<double>
     plastic_strain_jump(const Triangulation<3>                        &mesh,
+                        const parallel::OwnedCells                    &cells,
                         const std::vector<fe::QuadraturePointHistory> &history)
     {
-      const unsigned int  n_q = history.size() / mesh.n_active_cells();
-      std::vector<double> average(mesh.n_active_cells(), 0.);
+      std::vector<double> own(cells.n_owned(), 0.);
+      const std::size_t   n_q = own.empty() ? 0 : history.size() / own.size();
       for (std::size_t p = 0; p < history.size(); ++p)
-        average[p / n_q]
+        own[p / n_q]
           += history[p].state.equivalent_plastic_strain / double(n_q);
+      const std::vector<double> average = cells.gather_on_all(own, 1);
 
       // Every face between two active cells is seen from the finer side
       // (whose neighbour across it is active), or from both on a conforming

@@ -122,7 +122,7 @@ namespace deepdraw
       if (ranks.on_this_machine > 1)
         text << " on this machine for its " << ranks.on_this_machine
              << " MPI ranks (estimated from measured runs; every rank holds "
-                "the whole model)";
+                "the whole mesh)";
       else
         text << " (estimated from measured runs)";
       text << ", more than the " << available / 1e9 << " GB available; use "

@@ -48,6 +48,7 @@ namespace deepdraw
     {
       // Which rank evaluates which cells under mpirun (D215).
       parallel::partition_cells(mesh);
+      cells_of_this_rank = parallel::OwnedCells(mesh);
       dofs.distribute_dofs(fe);
       // Hanging vertices of a refined mesh (doc/theory.md §8): their dofs
       // follow their masters, so they are neither prescribed nor contact
@@ -209,6 +210,13 @@ namespace deepdraw
         fe::compute_cell_geometry(fe_values,
                                   geometry_of_cells[cell->active_cell_index()]);
       }
+    }
+
+
+    const parallel::OwnedCells &
+    SheetDiscretisation::owned_cells() const
+    {
+      return cells_of_this_rank;
     }
 
 

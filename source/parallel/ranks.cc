@@ -224,6 +224,30 @@ namespace deepdraw
 
 
     void
+    send_to_root(void *data, const std::size_t bytes, const unsigned int from)
+    {
+      const unsigned int me = this_rank();
+      if (from == 0 || (me != from && me != 0))
+        return;
+      char *bytes_data = static_cast<char *>(data);
+      for (std::size_t first = 0; first < bytes; first += largest_piece)
+      {
+        const int count = std::min(largest_piece, bytes - first);
+        if (me == from)
+          MPI_Send(bytes_data + first, count, MPI_BYTE, 0, 0, MPI_COMM_WORLD);
+        else
+          MPI_Recv(bytes_data + first,
+                   count,
+                   MPI_BYTE,
+                   from,
+                   0,
+                   MPI_COMM_WORLD,
+                   MPI_STATUS_IGNORE);
+      }
+    }
+
+
+    void
     gather_from_owners(void                            *data,
                        const std::size_t                bytes_per_owner,
                        const std::vector<unsigned int> &owners)

@@ -17,7 +17,9 @@ namespace deepdraw
       const unsigned int pairs[6][2]
         = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {0, 2}};
 
-      // The cell averages of value(point) over the quadrature points.
+      // The cell averages of value(point) over the quadrature points, for
+      // the cells of this rank, which holds their state and writes them
+      // (D201, D217).
       template <typename Value>
       void
       add_cell_average(const SimulationAccess &simulation,
@@ -28,10 +30,15 @@ namespace deepdraw
         Vector<double> &field = data.add_cell_field(simulation, name);
         const std::vector<fe::QuadraturePointHistory> &history
           = simulation.state().history;
-        const unsigned int n_q = history.size() / field.size();
+        const unsigned int n_q = simulation.sheet().n_points_per_cell();
+        const parallel::OwnedCells &cells = simulation.sheet().owned_cells();
         for (unsigned int cell = 0; cell < field.size(); ++cell)
-          for (unsigned int q = 0; q < n_q; ++q)
-            field[cell] += value(history[cell * n_q + q]) / n_q;
+        {
+          const unsigned int slot = cells.slot(cell);
+          if (slot != numbers::invalid_unsigned_int)
+            for (unsigned int q = 0; q < n_q; ++q)
+              field[cell] += value(history[slot * n_q + q]) / n_q;
+        }
       }
 
       // A symmetric tensor of each point as six cell fields

@@ -66,9 +66,10 @@ namespace deepdraw
         double cell_du[fe::dofs_per_cell];
         for (unsigned int i = 0; i < fe::dofs_per_cell; ++i)
           cell_du[i] = du[copy.dofs[i]];
-        const unsigned int first_point
-          = index * cell_geometry[index].n_points();
-        unsigned int            cell_plastic_points = 0;
+        // The state of a rank's own cells, in their order (D217).
+        const unsigned int slot        = sheet.owned_cells().slot(index);
+        const unsigned int first_point = slot * cell_geometry[index].n_points();
+        unsigned int       cell_plastic_points = 0;
         const fe::ElementStatus status
           = element.evaluate(cell_geometry[index],
                              cell_du,
@@ -76,7 +77,7 @@ namespace deepdraw
                              &trial_history[first_point],
                              trial_enhanced.empty()
                                ? scratch.no_enhanced_parameters
-                               : trial_enhanced[index],
+                               : trial_enhanced[slot],
                              copy.residual.begin(),
                              matrix != nullptr ? &copy.matrix : nullptr,
                              cell_plastic_points);

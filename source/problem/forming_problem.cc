@@ -78,7 +78,7 @@ namespace deepdraw
     {
       state::Checkpoint checkpoint;
       checkpoint.parameters     = parameters.listing;
-      checkpoint.state          = model->state();
+      checkpoint.state          = model->whole_state();
       checkpoint.table_sizes    = table_sizes;
       checkpoint.postprocessors = postprocessors.save();
       checkpoint.input_files    = input_files;

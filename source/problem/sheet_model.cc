@@ -115,18 +115,14 @@ namespace deepdraw
       // direction angle.
       fe::QuadraturePointHistory initial_point;
       initial_point.material_axes = parameters.material.initial_material_axes();
-      const unsigned int n_cells
-        = discretisation.triangulation().n_active_cells();
+      // Each rank the state of its own cells (D217).
+      const unsigned int n_cells = discretisation.owned_cells().n_owned();
       committed.history.assign(n_cells * discretisation.n_points_per_cell(),
                                initial_point);
       committed.vertices = discretisation.triangulation().get_vertices();
-      committed.enhanced_parameters.assign(
-        fe::n_enhanced_parameters(parameters.element.technology,
-                                  parameters.element.points_through_thickness)
-            > 0
-          ? n_cells
-          : 0,
-        fe::EnhancedParameters());
+      committed.enhanced_parameters.assign(has_enhanced_parameters() ? n_cells
+                                                                     : 0,
+                                           fe::EnhancedParameters());
       committed.next_increment
         = std::min(stage().load_stepping.initial_increment,
                    stage().load_stepping.maximum_increment);
@@ -247,7 +243,6 @@ namespace deepdraw
                        const double    start_load,
                        const double    end_load)
     {
-      gather_trial_state();
       committed.history             = trial_history;
       committed.enhanced_parameters = trial_enhanced_parameters;
       discretisation.hanging_node_constraints().distribute(unknowns);
@@ -270,7 +265,6 @@ namespace deepdraw
       // The Newton solution keeps the last increment's du (the
       // extrapolation predictor scales it) with the re-equilibrated
       // multipliers and tool positions.
-      gather_trial_state();
       committed.history = trial_history;
       for (types::global_dof_index i = discretisation.n_displacement_dofs();
            i < unknowns.size();
@@ -302,15 +296,51 @@ namespace deepdraw
     }
 
 
-    void
-    SheetModel::gather_trial_state()
+    bool
+    SheetModel::has_enhanced_parameters() const
     {
-      if (parallel::n_ranks() == 1)
-        return;
-      const std::vector<unsigned int> owners
-        = parallel::cell_owners(discretisation.triangulation());
-      parallel::gather_from_owners(trial_history, owners);
-      parallel::gather_from_owners(trial_enhanced_parameters, owners);
+      return fe::n_enhanced_parameters(
+               parameters.element.technology,
+               parameters.element.points_through_thickness)
+             > 0;
+    }
+
+
+    void
+    SheetModel::gather_cell_state(state::SimulationState &whole,
+                                  const bool              to_all) const
+    {
+      const parallel::OwnedCells &cells    = discretisation.owned_cells();
+      const unsigned int          n_points = discretisation.n_points_per_cell();
+      const unsigned int n_enhanced        = has_enhanced_parameters() ? 1 : 0;
+      whole.history                        = to_all
+                                               ? cells.gather_on_all(committed.history, n_points)
+                                               : cells.gather_on_root(committed.history, n_points);
+      whole.enhanced_parameters
+        = to_all
+            ? cells.gather_on_all(committed.enhanced_parameters, n_enhanced)
+            : cells.gather_on_root(committed.enhanced_parameters, n_enhanced);
+    }
+
+
+    void
+    SheetModel::keep_own_cell_state(state::SimulationState &whole) const
+    {
+      const parallel::OwnedCells &cells = discretisation.owned_cells();
+      whole.history
+        = cells.keep_own(whole.history, discretisation.n_points_per_cell());
+      whole.enhanced_parameters
+        = cells.keep_own(whole.enhanced_parameters,
+                         has_enhanced_parameters() ? 1 : 0);
+    }
+
+
+    state::SimulationState
+    SheetModel::whole_state() const
+    {
+      state::SimulationState whole = committed;
+      gather_cell_state(whole, false);
+      return whole;
     }
 
 
@@ -334,8 +364,13 @@ namespace deepdraw
                                       committed.previous_converged_solution);
         old_area = blank::nodal_surface_area(discretisation.triangulation());
       }
+      // The transfer reads the parents' state, which another rank may
+      // hold: every rank transfers the whole state and keeps its new cells'
+      // (D217).
+      gather_cell_state(committed, true);
       const std::vector<fe::VertexParents> parents
         = adaptation.refine(discretisation, committed, *material_model);
+      keep_own_cell_state(committed);
       set_up_system();
       // The transfer kept the displacement blocks of the Newton solutions;
       // the contact blocks are those of the new pairs, started from the
@@ -391,10 +426,11 @@ namespace deepdraw
                  n_cells * discretisation.n_points_per_cell());
       check_size("cells with enhanced parameters",
                  saved.enhanced_parameters.size(),
-                 committed.enhanced_parameters.empty() ? 0 : n_cells);
+                 has_enhanced_parameters() ? n_cells : 0);
       if (contact_coupling.active())
         contact_coupling.restore(saved.contact);
       committed = std::move(saved);
+      keep_own_cell_state(committed);
       // The configuration x_t of the checkpoint (updated Lagrangian).
       discretisation.set_vertices(committed.vertices);
       thickness_measurement.update(discretisation.triangulation(),

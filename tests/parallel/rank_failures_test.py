@@ -21,7 +21,7 @@ waiting.
   whole row, and --resume on 2 ranks from what is on disk ends with the
   uninterrupted 2-rank run's tables within 1e-8.
 - A mesh that fits the memory for one rank but not for the 3 ranks of this
-  machine, each of which holds the whole model (D209): exit 2 before any
+  machine, each of which holds the whole mesh (D209): exit 2 before any
   mesh is made, the message once, naming the ranks and the memory they
   need together, which is the one-rank estimate of D53 (computed here from
   its published constants) times 3 (1 - f) + f with MUMPS' factor share

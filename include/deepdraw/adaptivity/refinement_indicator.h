@@ -8,6 +8,7 @@
 #include <deepdraw/adaptivity/adaptivity_parameters.h>
 #include <deepdraw/fe/quadrature_point_update.h>
 #include <deepdraw/geometry/rigid_tool.h>
+#include <deepdraw/parallel/owned_cells.h>
 #include <vector>
 
 namespace deepdraw
@@ -18,9 +19,12 @@ namespace deepdraw
 
     // Per active cell: the largest jump |ε̄ᵖ_K − ε̄ᵖ_N| of the cell-average
     // equivalent plastic strain to a face neighbour N (history has
-    // fe::n_weighted_points per cell, by active cell index).
+    // fe::n_weighted_points per cell for the cells of this rank, in their
+    // order, D217; the ranks' averages are gathered, so every rank must
+    // call it).
     std::vector<double>
     plastic_strain_jump(const Triangulation<3>                        &mesh,
+                        const parallel::OwnedCells                    &cells,
                         const std::vector<fe::QuadraturePointHistory> &history);
 
     // Per active cell: 1 if its centre in the initial configuration

@@ -13,7 +13,7 @@ namespace deepdraw
   namespace blank
   {
     // The ranks of a run that share one machine's memory (D209). Every
-    // rank holds the whole model; MUMPS splits its factors across all the
+    // rank holds the whole mesh; MUMPS splits its factors across all the
     // ranks of the run, UMFPACK factorises on every rank.
     struct RanksOnMachine
     {

@@ -19,6 +19,7 @@
 #include <deepdraw/blank/blank_geometry.h>
 #include <deepdraw/fe/cell_geometry.h>
 #include <deepdraw/fe/vertex_parents.h>
+#include <deepdraw/parallel/owned_cells.h>
 #include <vector>
 
 namespace deepdraw
@@ -107,6 +108,10 @@ namespace deepdraw
       // index; recomputed whenever the vertices move.
       const std::vector<fe::CellGeometry> &
       cell_geometry() const;
+      // The cells this rank evaluates (all with one rank), where the state
+      // keeps their records (D215, D217); set by distribute_dofs().
+      const parallel::OwnedCells &
+      owned_cells() const;
       // The weighted points of the cells' quadrature: a cell's points in
       // the state.
       unsigned int
@@ -135,6 +140,7 @@ namespace deepdraw
       std::array<std::vector<types::global_dof_index>, 6> face_dofs;
       std::vector<std::vector<unsigned int>>              free_face_vertices;
       AffineConstraints<double>                           hanging_nodes;
+      parallel::OwnedCells                                cells_of_this_rank;
       std::vector<fe::CellGeometry>                       geometry_of_cells;
       Quadrature<3>                                       cell_quadrature;
       double                                              element_size = 1.;

@@ -1,8 +1,9 @@
 // The MPI ranks of a run (doc/architecture.md, "Parallel runs", D199).
-// Every rank holds the whole model (mesh, state, Newton vectors) and takes
-// every decision itself; what is split is the work: each rank evaluates
-// the elements of its cells (parallel/cell_partition.h) and completes the
-// Newton rows it owns, and MUMPS factorises across all ranks. So that the ranks
+// Every rank holds the whole mesh and the Newton vectors and takes every
+// decision itself; what is split is the work: each rank evaluates the
+// elements of its cells (parallel/cell_partition.h), keeping their
+// material state (parallel/owned_cells.h), and completes the Newton rows
+// it owns, and MUMPS factorises across all ranks. So that the ranks
 // take the same decisions, every sum over ranks gives the same bits on every
 // rank (reduced on rank 0, then broadcast). With one rank every function here
 // returns at once and changes nothing.
@@ -57,6 +58,12 @@ namespace deepdraw
     // Every rank receives rank root's bytes.
     void
     broadcast(void *data, std::size_t bytes, unsigned int root = 0);
+
+    // Rank `from` sends `bytes` bytes of data to rank 0, which receives
+    // them in data; the other ranks do nothing (a checkpoint's state,
+    // D217).
+    void
+    send_to_root(void *data, std::size_t bytes, unsigned int from);
 
     // Records computed by their owners, sent to every rank in place: data
     // holds bytes_per_owner bytes for each i of owners, computed by rank

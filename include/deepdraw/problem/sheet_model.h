@@ -149,10 +149,17 @@ namespace deepdraw
       linear_system();
       const linear_algebra::NewtonLinearSystem &
       linear_system() const;
+      // The committed state; its history and enhanced parameters are those
+      // of the cells this rank evaluates (sheet().owned_cells(), D217).
       state::SimulationState &
       state();
       const state::SimulationState &
       state() const;
+      // The committed state with every cell's history and enhanced
+      // parameters, on rank 0 (a checkpoint); every rank must call it, and
+      // the other ranks' copies hold no cell records.
+      state::SimulationState
+      whole_state() const;
       // Internal nodal forces of the last assembly.
       const Vector<double> &
       internal_force() const;
@@ -197,10 +204,18 @@ namespace deepdraw
       // (updated Lagrangian).
       void
       move_mesh(Vector<double> &unknowns);
-      // Under mpirun each rank updated the trial state of its own cells:
-      // every rank gets all of them before they are committed (D199).
+      // Whether the element keeps enhanced parameters per cell
+      // (incompatible modes).
+      bool
+      has_enhanced_parameters() const;
+      // The committed history and enhanced parameters of every cell, on
+      // every rank (to_all) or on rank 0 (each rank holds its own cells',
+      // D217).
       void
-      gather_trial_state();
+      gather_cell_state(state::SimulationState &whole, bool to_all) const;
+      // Each rank's own cells' records of a whole cell state.
+      void
+      keep_own_cell_state(state::SimulationState &whole) const;
       // The Newton solutions of the committed state sized for the current
       // unknowns: their displacement blocks kept, the contact blocks from
       // the pairs before the change (parents: of a refinement, none: of a

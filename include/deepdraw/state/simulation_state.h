@@ -39,8 +39,10 @@ namespace deepdraw
       // and of the one before (extrapolation predictor).
       Vector<double> converged_solution;
       Vector<double> previous_converged_solution;
-      // Quadrature-point history (8 points per cell, by active cell index)
-      // and the element-internal unknowns per cell (incompatible modes).
+      // Quadrature-point history (8 points per cell) and the element-internal
+      // unknowns per cell (incompatible modes), of the cells this rank
+      // evaluates in their active-cell order (every cell with one rank, and
+      // in a checkpoint; parallel::OwnedCells, D217).
       std::vector<fe::QuadraturePointHistory> history;
       std::vector<fe::EnhancedParameters>     enhanced_parameters;
       contact::ContactHistory                 contact;

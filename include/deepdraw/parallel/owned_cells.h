@@ -1,0 +1,153 @@
+// The cells a rank evaluates, and where it keeps their records (D217). The
+// material state of a cell (the history of its quadrature points, its
+// enhanced parameters) lives only on the rank that evaluates the cell, in
+// the active-cell order of that rank's cells; every cell's records are
+// gathered only where a whole state is needed: on rank 0 for a checkpoint,
+// on every rank for a refinement's state transfer. With one rank a rank's
+// cells are all the cells, in their order.
+#ifndef deepdraw_parallel_owned_cells_h
+#define deepdraw_parallel_owned_cells_h
+
+#include <deal.II/base/types.h>
+#include <deal.II/grid/tria.h>
+#include <deepdraw/parallel/ranks.h>
+#include <type_traits>
+#include <vector>
+
+namespace deepdraw
+{
+  namespace parallel
+  {
+    class OwnedCells
+    {
+    public:
+      OwnedCells() = default;
+      // From the cells' subdomain ids (partition_cells); nothing is
+      // communicated.
+      explicit OwnedCells(const dealii::Triangulation<3> &mesh);
+
+      // Active cells of the mesh, and those of this rank.
+      unsigned int
+      n_cells() const;
+      unsigned int
+      n_owned() const;
+      // The place of an active cell among this rank's cells;
+      // numbers::invalid_unsigned_int for another rank's cell.
+      unsigned int
+      slot(unsigned int active_cell_index) const;
+
+      // This rank's share of records kept per cell: items_per_cell items
+      // for each cell of `whole`, by active cell index.
+      template <typename T>
+      std::vector<T>
+      keep_own(const std::vector<T> &whole, unsigned int items_per_cell) const;
+      // Every cell's records on every rank, from each rank's share.
+      template <typename T>
+      std::vector<T>
+      gather_on_all(const std::vector<T> &own,
+                    unsigned int          items_per_cell) const;
+      // Every cell's records on rank 0, empty on the other ranks; rank 0
+      // receives the ranks' shares one after the other, so that it holds
+      // the whole records and one rank's share at a time.
+      template <typename T>
+      std::vector<T>
+      gather_on_root(const std::vector<T> &own,
+                     unsigned int          items_per_cell) const;
+
+    private:
+      std::vector<unsigned int> owner_of_cell;
+      std::vector<unsigned int> slot_of_cell;
+      std::vector<unsigned int> cells_of_rank;
+
+      // Copies the items of `rank`'s cells between their places in `whole`
+      // and the consecutive `share`, in the cells' order.
+      template <typename T>
+      void
+      place_share(unsigned int rank,
+                  unsigned int items_per_cell,
+                  const T     *share,
+                  T           *whole) const;
+    };
+
+
+    template <typename T>
+    void
+    OwnedCells::place_share(const unsigned int rank,
+                            const unsigned int items_per_cell,
+                            const T           *share,
+                            T                 *whole) const
+    {
+      std::size_t position = 0;
+      for (std::size_t cell = 0; cell < owner_of_cell.size(); ++cell)
+        if (owner_of_cell[cell] == rank)
+          for (unsigned int i = 0; i < items_per_cell; ++i)
+            whole[cell * items_per_cell + i] = share[position++];
+    }
+
+
+    template <typename T>
+    std::vector<T>
+    OwnedCells::keep_own(const std::vector<T> &whole,
+                         const unsigned int    items_per_cell) const
+    {
+      std::vector<T> own;
+      own.reserve(std::size_t(n_owned()) * items_per_cell);
+      for (std::size_t cell = 0; cell < owner_of_cell.size(); ++cell)
+        if (slot_of_cell[cell] != dealii::numbers::invalid_unsigned_int)
+          own.insert(own.end(),
+                     whole.begin() + cell * items_per_cell,
+                     whole.begin() + (cell + 1) * items_per_cell);
+      return own;
+    }
+
+
+    template <typename T>
+    std::vector<T>
+    OwnedCells::gather_on_all(const std::vector<T> &own,
+                              const unsigned int    items_per_cell) const
+    {
+      static_assert(std::is_trivially_copyable<T>::value,
+                    "records are sent as bytes");
+      if (n_ranks() == 1)
+        return own;
+      std::vector<T> whole(std::size_t(n_cells()) * items_per_cell);
+      place_share(this_rank(), items_per_cell, own.data(), whole.data());
+      gather_from_owners(whole, owner_of_cell);
+      return whole;
+    }
+
+
+    template <typename T>
+    std::vector<T>
+    OwnedCells::gather_on_root(const std::vector<T> &own,
+                               const unsigned int    items_per_cell) const
+    {
+      static_assert(std::is_trivially_copyable<T>::value,
+                    "records are sent as bytes");
+      if (n_ranks() == 1)
+        return own;
+      std::vector<T> whole;
+      if (is_root())
+      {
+        whole.resize(std::size_t(n_cells()) * items_per_cell);
+        place_share(0, items_per_cell, own.data(), whole.data());
+      }
+      std::vector<T> share;
+      for (unsigned int rank = 1; rank < n_ranks(); ++rank)
+      {
+        const std::size_t n_items
+          = std::size_t(cells_of_rank[rank]) * items_per_cell;
+        if (is_root())
+          share.resize(n_items);
+        else if (rank == this_rank())
+          share = own;
+        send_to_root(share.data(), n_items * sizeof(T), rank);
+        if (is_root())
+          place_share(rank, items_per_cell, share.data(), whole.data());
+      }
+      return whole;
+    }
+  } // namespace parallel
+} // namespace deepdraw
+
+#endif
