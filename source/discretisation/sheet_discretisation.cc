@@ -199,17 +199,20 @@ namespace deepdraw
     void
     SheetDiscretisation::update_cell_geometry()
     {
-      // Once per configuration, not per assembly (D13).
+      // Once per configuration, not per assembly (D13), and by the rank
+      // that evaluates the cell only (D218).
       FEValues<3> fe_values(fe_scalar,
                             cell_quadrature,
                             fe::cell_geometry_flags());
-      geometry_of_cells.resize(mesh.n_active_cells());
+      geometry_of_cells.resize(cells_of_this_rank.n_owned());
       for (const auto &cell : mesh.active_cell_iterators())
-      {
-        fe_values.reinit(cell);
-        fe::compute_cell_geometry(fe_values,
-                                  geometry_of_cells[cell->active_cell_index()]);
-      }
+        if (parallel::is_owned(*cell))
+        {
+          fe_values.reinit(cell);
+          fe::compute_cell_geometry(fe_values,
+                                    geometry_of_cells[cells_of_this_rank.slot(
+                                      cell->active_cell_index())]);
+        }
     }
 
 
@@ -340,6 +343,8 @@ namespace deepdraw
       for (const fe::CellGeometry &cell : geometry_of_cells)
         for (const double w : cell.JxW)
           volume += w;
+      // Each rank has its own cells' (D218).
+      parallel::sum(&volume, 1);
       return volume;
     }
 

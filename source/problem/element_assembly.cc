@@ -66,12 +66,13 @@ namespace deepdraw
         double cell_du[fe::dofs_per_cell];
         for (unsigned int i = 0; i < fe::dofs_per_cell; ++i)
           cell_du[i] = du[copy.dofs[i]];
-        // The state of a rank's own cells, in their order (D217).
+        // The state and geometry of a rank's own cells, in their order
+        // (D217, D218).
         const unsigned int slot        = sheet.owned_cells().slot(index);
-        const unsigned int first_point = slot * cell_geometry[index].n_points();
+        const unsigned int first_point = slot * cell_geometry[slot].n_points();
         unsigned int       cell_plastic_points = 0;
         const fe::ElementStatus status
-          = element.evaluate(cell_geometry[index],
+          = element.evaluate(cell_geometry[slot],
                              cell_du,
                              &history[first_point],
                              &trial_history[first_point],

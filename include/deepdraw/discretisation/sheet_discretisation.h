@@ -104,8 +104,9 @@ namespace deepdraw
       // mesh).
       const AffineConstraints<double> &
       hanging_node_constraints() const;
-      // Geometry of every cell on x_t (gradients, weights), by active cell
-      // index; recomputed whenever the vertices move.
+      // Geometry on x_t (gradients, weights) of the cells this rank
+      // evaluates, by their slot in owned_cells() (every cell with one
+      // rank, D218); recomputed whenever the vertices move.
       const std::vector<fe::CellGeometry> &
       cell_geometry() const;
       // The cells this rank evaluates (all with one rank), where the state
@@ -116,7 +117,8 @@ namespace deepdraw
       // the state.
       unsigned int
       n_points_per_cell() const;
-      // Volume of the sheet on x_t (mm³).
+      // Volume of the sheet on x_t (mm³); a sum over the ranks, which must
+      // all call it.
       double
       volume() const;
       // Mean in-plane element size of the blank's mesh (contact
