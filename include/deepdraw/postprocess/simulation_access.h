@@ -64,6 +64,9 @@ namespace deepdraw
       virtual const contact::ContactCoupling &
       contact() const = 0;
       // The committed state: load, increment, total displacement, history.
+      // Its history and enhanced parameters are those of the cells this
+      // rank evaluates, at their slots in sheet().owned_cells() (every cell
+      // with one rank, D217).
       virtual const state::SimulationState &
       state() const = 0;
       // Internal nodal forces of the last assembly (reactions at
