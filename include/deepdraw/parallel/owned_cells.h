@@ -59,8 +59,8 @@ namespace deepdraw
       std::vector<unsigned int> slot_of_cell;
       std::vector<unsigned int> cells_of_rank;
 
-      // Copies the items of `rank`'s cells between their places in `whole`
-      // and the consecutive `share`, in the cells' order.
+      // Copies the records of `rank`'s cells, consecutive in `share` in the
+      // cells' order, to their places in `whole`.
       template <typename T>
       void
       place_share(unsigned int rank,

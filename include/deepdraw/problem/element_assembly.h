@@ -29,8 +29,8 @@ namespace deepdraw
     // Adds the residual r (rhs -= r) of every cell this rank evaluates
     // and, with matrix != nullptr, its tangent for the displacement
     // increment du (which must satisfy the hanging-node constraints)
-    // through the constraints; internal_force
-    // gets f_int, condensed onto the masters of hanging vertices. The
+    // through the constraints; internal_force gets f_int, condensed onto
+    // the masters of hanging vertices. The
     // trial history and element-internal unknowns are updated from the
     // committed history; all three hold the rank's own cells in their
     // order (sheet.owned_cells(), D217).
