@@ -3,8 +3,9 @@
 the short square cup of restart/kill_and_resume_test (8 x 8 x 2 cells, 15
 increments, a checkpoint after each) without mpirun and with 2 and 3 ranks
 (oversubscribed); the same cup refined through the thickness (cut_z) by the
-plastic strain jump, with 1 and 2 ranks; and a 2-rank run stopped at load
-0.8 and resumed with 1, 2 and 3 ranks.
+plastic strain jump, with 1 and 2 ranks, and stopped at load 0.8 on 2 ranks
+and resumed on 1 and on 3; and a 2-rank run stopped at load 0.8 and resumed
+with 1, 2 and 3 ranks.
 
 Expectations, independent of the program's own numbers:
 - the same Newton path: every increment with the same number of iterations
@@ -193,6 +194,26 @@ def main():
     compare(failures, work / "cut_z_one", work / "cut_z_two",
             "cut_z refinement, 2 ranks against 1")
     check_material_fields(failures, work / "cut_z_one", work / "cut_z_two")
+
+    # The refined run's checkpoint (gathered on rank 0 from the ranks' cells
+    # after the refinements moved them, D217) resumed on 3 ranks, which
+    # replay the refinements and keep their own cells, against the same
+    # checkpoint resumed on one rank. Not against the uninterrupted run: a
+    # run that ends at load 0.8 does not refine after its last increment
+    # (D80), so the resumed runs refine once less.
+    (work / "cut_z_to_0_8.prm").write_text(
+        TO_0_8.format(base=work / "cut_z.prm"))
+    if must_run(failures, 2, args, work, "cut_z_to_0_8.prm",
+                "--output-directory", "cut_z_stopped", "--quiet"):
+        for ranks, name in ((0, "cut_z_resumed_one"),
+                            (3, "cut_z_resumed_three")):
+            shutil.copytree(work / "cut_z_stopped", work / name)
+            must_run(failures, ranks, args, work, "cut_z.prm",
+                     "--output-directory", name, "--resume", "--quiet")
+        compare(failures, work / "cut_z_resumed_one",
+                work / "cut_z_resumed_three",
+                "the cut_z run's 2-rank checkpoint resumed on 3 ranks "
+                "against 1")
 
     (work / "to_0_8.prm").write_text(TO_0_8.format(base=SHORT_CUP))
     if must_run(failures, 2, args, work, "to_0_8.prm", "--output-directory",
