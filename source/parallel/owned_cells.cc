@@ -1,3 +1,4 @@
+#include <deepdraw/parallel/cell_partition.h>
 #include <deepdraw/parallel/owned_cells.h>
 #include <stdexcept>
 #include <string>
@@ -7,23 +8,21 @@ namespace deepdraw
   namespace parallel
   {
     OwnedCells::OwnedCells(const dealii::Triangulation<3> &mesh)
-        : owner_of_cell(mesh.n_active_cells())
-        , slot_of_cell(mesh.n_active_cells(),
+        : owner_of_cell(cell_owners(mesh))
+        , slot_of_cell(owner_of_cell.size(),
                        dealii::numbers::invalid_unsigned_int)
         , cells_of_rank(n_ranks(), 0)
     {
       const unsigned int me = this_rank();
-      for (const auto &cell : mesh.active_cell_iterators())
+      for (std::size_t cell = 0; cell < owner_of_cell.size(); ++cell)
       {
-        const unsigned int index = cell->active_cell_index();
-        const unsigned int owner = cell->subdomain_id();
+        const unsigned int owner = owner_of_cell[cell];
         if (owner >= cells_of_rank.size())
           throw std::logic_error("a cell of subdomain " + std::to_string(owner)
                                  + " with " + std::to_string(n_ranks())
                                  + " ranks: the mesh is not partitioned");
-        owner_of_cell[index] = owner;
         if (owner == me)
-          slot_of_cell[index] = cells_of_rank[me];
+          slot_of_cell[cell] = cells_of_rank[me];
         ++cells_of_rank[owner];
       }
     }

@@ -224,19 +224,26 @@ namespace deepdraw
 
 
     void
-    send_to_root(void *data, const std::size_t bytes, const unsigned int from)
+    send_to_root(const void        *sent,
+                 void              *received,
+                 const std::size_t  bytes,
+                 const unsigned int from)
     {
       const unsigned int me = this_rank();
       if (from == 0 || (me != from && me != 0))
         return;
-      char *bytes_data = static_cast<char *>(data);
       for (std::size_t first = 0; first < bytes; first += largest_piece)
       {
         const int count = std::min(largest_piece, bytes - first);
         if (me == from)
-          MPI_Send(bytes_data + first, count, MPI_BYTE, 0, 0, MPI_COMM_WORLD);
+          MPI_Send(static_cast<const char *>(sent) + first,
+                   count,
+                   MPI_BYTE,
+                   0,
+                   0,
+                   MPI_COMM_WORLD);
         else
-          MPI_Recv(bytes_data + first,
+          MPI_Recv(static_cast<char *>(received) + first,
                    count,
                    MPI_BYTE,
                    from,

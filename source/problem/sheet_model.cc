@@ -310,16 +310,16 @@ namespace deepdraw
     SheetModel::gather_cell_state(state::SimulationState &whole,
                                   const bool              to_all) const
     {
-      const parallel::OwnedCells &cells    = discretisation.owned_cells();
-      const unsigned int          n_points = discretisation.n_points_per_cell();
-      const unsigned int n_enhanced        = has_enhanced_parameters() ? 1 : 0;
-      whole.history                        = to_all
-                                               ? cells.gather_on_all(committed.history, n_points)
-                                               : cells.gather_on_root(committed.history, n_points);
-      whole.enhanced_parameters
-        = to_all
-            ? cells.gather_on_all(committed.enhanced_parameters, n_enhanced)
-            : cells.gather_on_root(committed.enhanced_parameters, n_enhanced);
+      const parallel::OwnedCells &cells = discretisation.owned_cells();
+      const auto gather = [&](const auto &own, const unsigned int per_cell)
+      {
+        return to_all ? cells.gather_on_all(own, per_cell)
+                      : cells.gather_on_root(own, per_cell);
+      };
+      whole.history
+        = gather(committed.history, discretisation.n_points_per_cell());
+      whole.enhanced_parameters = gather(committed.enhanced_parameters,
+                                         has_enhanced_parameters() ? 1 : 0);
     }
 
 

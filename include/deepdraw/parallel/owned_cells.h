@@ -139,9 +139,7 @@ namespace deepdraw
           = std::size_t(cells_of_rank[rank]) * items_per_cell;
         if (is_root())
           share.resize(n_items);
-        else if (rank == this_rank())
-          share = own;
-        send_to_root(share.data(), n_items * sizeof(T), rank);
+        send_to_root(own.data(), share.data(), n_items * sizeof(T), rank);
         if (is_root())
           place_share(rank, items_per_cell, share.data(), whole.data());
       }

@@ -59,11 +59,14 @@ namespace deepdraw
     void
     broadcast(void *data, std::size_t bytes, unsigned int root = 0);
 
-    // Rank `from` sends `bytes` bytes of data to rank 0, which receives
-    // them in data; the other ranks do nothing (a checkpoint's state,
-    // D217).
+    // Rank `from` sends `bytes` bytes of `sent` to rank 0, which receives
+    // them in `received`; the other ranks do nothing (a checkpoint's
+    // state, D217).
     void
-    send_to_root(void *data, std::size_t bytes, unsigned int from);
+    send_to_root(const void  *sent,
+                 void        *received,
+                 std::size_t  bytes,
+                 unsigned int from);
 
     // Records computed by their owners, sent to every rank in place: data
     // holds bytes_per_owner bytes for each i of owners, computed by rank
