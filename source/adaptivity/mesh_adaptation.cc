@@ -88,7 +88,8 @@ namespace deepdraw
     std::vector<fe::VertexParents>
     MeshAdaptation::refine(discretisation::SheetDiscretisation &sheet,
                            state::SimulationState              &state,
-                           const material::ElastoPlasticity    &material) const
+                           const material::ElastoPlasticity    &material,
+                           const bool enhanced_parameters) const
     {
       const unsigned int n_old_vertices = sheet.triangulation().n_vertices();
       TransferOptions    options;
@@ -99,14 +100,29 @@ namespace deepdraw
                                    ? HistoryTransfer::interpolated
                                    : HistoryTransfer::nearest;
       options.material         = &material;
-      refine_and_transfer(sheet.triangulation(),
-                          sheet.dof_handler(),
-                          state,
-                          options);
+      // Each rank makes the records of its cells' children (D220) ...
+      options.held_cells          = &sheet.owned_cells();
+      options.points_per_cell     = sheet.n_points_per_cell();
+      options.enhanced_parameters = enhanced_parameters;
+      const std::vector<unsigned int> holders
+        = refine_and_transfer(sheet.triangulation(),
+                              sheet.dof_handler(),
+                              state,
+                              options);
       const std::vector<fe::VertexParents> parents
         = fe::vertex_parents(sheet.triangulation(), n_old_vertices);
       sheet.add_blank_parents(parents, n_old_vertices);
       sheet.distribute_dofs();
+      // ... and sends them to the ranks that evaluate them on the new
+      // partition.
+      const parallel::OwnedCells &cells = sheet.owned_cells();
+      state.history = cells.collect_from_holders(std::move(state.history),
+                                                 sheet.n_points_per_cell(),
+                                                 holders);
+      state.enhanced_parameters
+        = cells.collect_from_holders(std::move(state.enhanced_parameters),
+                                     enhanced_parameters ? 1 : 0,
+                                     holders);
       return parents;
     }
 

@@ -22,6 +22,36 @@ namespace deepdraw
         return {cell->level(), cell->index()};
       }
 
+      // Where a cell's records start among those this rank holds
+      // (numbers::invalid_unsigned_int where another rank holds them), and
+      // the rank that holds them.
+      struct HeldRecords
+      {
+        unsigned int position;
+        unsigned int holder;
+      };
+
+      // The records of each active cell, by cell (not by active index,
+      // which refinement renumbers).
+      std::map<CellKey, HeldRecords>
+      records_before(const Triangulation<3>     &triangulation,
+                     const parallel::OwnedCells *held)
+      {
+        std::map<CellKey, HeldRecords> records;
+        for (const auto &cell : triangulation.active_cell_iterators())
+        {
+          if (cell->coarsen_flag_set())
+            throw std::logic_error("refine_and_transfer: coarsening is not "
+                                   "supported");
+          const unsigned int index = cell->active_cell_index();
+          records[key_of(cell)]
+            = held == nullptr
+                ? HeldRecords{index, parallel::this_rank()}
+                : HeldRecords{held->slot(index), held->owner(index)};
+        }
+        return records;
+      }
+
       // The displacement block (first n entries) of a Newton solution.
       Vector<double>
       displacement_block(const Vector<double> &solution, const std::size_t n)
@@ -44,10 +74,96 @@ namespace deepdraw
             nearest = q;
         return nearest;
       }
+
+
+      // The records of the refined mesh's cells whose own records, or
+      // their parent's, this rank holds, in the cells' order; each new
+      // cell's place among them (or numbers::invalid_unsigned_int) and the
+      // rank that holds it.
+      void
+      transfer_records(const Triangulation<3>               &triangulation,
+                       const std::map<CellKey, HeldRecords> &before,
+                       const unsigned int                    n_points,
+                       const bool                            has_enhanced,
+                       const TransferOptions                &options,
+                       state::SimulationState               &state,
+                       std::vector<unsigned int>            &position_of_cell,
+                       std::vector<unsigned int>            &holder_of_cell)
+      {
+        const unsigned int n_cells = triangulation.n_active_cells();
+        position_of_cell.assign(n_cells, numbers::invalid_unsigned_int);
+        holder_of_cell.assign(n_cells, 0);
+        // A new cell's records come from itself where it was active, else
+        // from its parent.
+        std::vector<const HeldRecords *> source(n_cells);
+        std::vector<bool>                is_child(n_cells, false);
+        unsigned int                     n_held = 0;
+        for (const auto &cell : triangulation.active_cell_iterators())
+        {
+          const unsigned int index = cell->active_cell_index();
+          auto               found = before.find(key_of(cell));
+          if (found == before.end())
+          {
+            found           = before.find(key_of(cell->parent()));
+            is_child[index] = true;
+            if (found == before.end())
+              throw std::logic_error("refine_and_transfer: a new cell whose "
+                                     "parent was not active");
+          }
+          source[index]         = &found->second;
+          holder_of_cell[index] = found->second.holder;
+          if (found->second.position != numbers::invalid_unsigned_int)
+            position_of_cell[index] = n_held++;
+        }
+
+        const Quadrature<3> quadrature
+          = fe::quadrature_with_weighted_points(n_points);
+        std::vector<fe::QuadraturePointHistory> history(std::size_t(n_held)
+                                                        * n_points);
+        std::vector<fe::EnhancedParameters> enhanced(has_enhanced ? n_held : 0);
+        for (const auto &cell : triangulation.active_cell_iterators())
+        {
+          const unsigned int index = cell->active_cell_index();
+          const std::size_t  to    = position_of_cell[index];
+          if (to == numbers::invalid_unsigned_int)
+            continue;
+          const std::size_t                 from = source[index]->position;
+          const fe::QuadraturePointHistory *points
+            = &state.history[from * n_points];
+          if (!is_child[index])
+          {
+            std::copy_n(points, n_points, history.begin() + to * n_points);
+            if (has_enhanced)
+              enhanced[to] = state.enhanced_parameters[from];
+            continue;
+          }
+          // The child's points in the parent's unit cell: exact, and
+          // independent of where the new vertices were placed. Children's
+          // enhanced parameters start from zero.
+          const auto         parent = cell->parent();
+          const unsigned int child  = parent->child_iterator_to_index(cell);
+          for (unsigned int q = 0; q < n_points; ++q)
+          {
+            const Point<3> xi = GeometryInfo<3>::child_to_cell_coordinates(
+              quadrature.point(q),
+              child,
+              parent->refinement_case());
+            history[to * n_points + q]
+              = options.history == HistoryTransfer::interpolated
+                  ? interpolate_history(points,
+                                        quadrature,
+                                        xi,
+                                        *options.material)
+                  : points[nearest_point(quadrature, xi)];
+          }
+        }
+        state.history             = std::move(history);
+        state.enhanced_parameters = std::move(enhanced);
+      }
     } // namespace
 
 
-    void
+    std::vector<unsigned int>
     refine_and_transfer(Triangulation<3>       &triangulation,
                         DoFHandler<3>          &dof_handler,
                         state::SimulationState &state,
@@ -58,27 +174,23 @@ namespace deepdraw
         throw std::invalid_argument("refine_and_transfer: the interpolated "
                                     "history needs the material");
       // The rule follows from the state's points per cell (D202).
+      const parallel::OwnedCells *held = options.held_cells;
+      const unsigned int          n_held
+        = held ? held->n_owned() : triangulation.n_active_cells();
       const unsigned int n_points
-        = state.history.size() / triangulation.n_active_cells();
-      const Quadrature<3> quadrature
-        = fe::quadrature_with_weighted_points(n_points);
-      const std::size_t n_dofs = dof_handler.n_dofs();
-      if (state.history.size() != triangulation.n_active_cells() * n_points
-          || state.total_displacement.size() != n_dofs)
+        = held ? options.points_per_cell
+               : state.history.size() / triangulation.n_active_cells();
+      const bool has_enhanced = held ? options.enhanced_parameters
+                                     : !state.enhanced_parameters.empty();
+      if ((held && held->n_cells() != triangulation.n_active_cells())
+          || state.history.size() != std::size_t(n_held) * n_points
+          || (has_enhanced && state.enhanced_parameters.size() != n_held)
+          || state.total_displacement.size() != dof_handler.n_dofs())
         throw std::logic_error("refine_and_transfer: the state does not "
                                "belong to this mesh");
-      const bool has_enhanced = !state.enhanced_parameters.empty();
-
-      // Where each active cell's data start, by cell (not by active index,
-      // which refinement renumbers).
-      std::map<CellKey, unsigned int> old_index;
-      for (const auto &cell : triangulation.active_cell_iterators())
-      {
-        if (cell->coarsen_flag_set())
-          throw std::logic_error("refine_and_transfer: coarsening is not "
-                                 "supported");
-        old_index[key_of(cell)] = cell->active_cell_index();
-      }
+      const std::map<CellKey, HeldRecords> before
+        = records_before(triangulation, held);
+      const std::size_t n_dofs = dof_handler.n_dofs();
 
       // For the smooth placement (D87): the mesh lines before refinement
       // and the old vertices' initial positions x - u, in which those lines
@@ -183,53 +295,23 @@ namespace deepdraw
           }
       }
 
-      std::vector<fe::QuadraturePointHistory> history(
-        triangulation.n_active_cells() * n_points);
-      std::vector<fe::EnhancedParameters> enhanced(
-        has_enhanced ? triangulation.n_active_cells() : 0);
-      for (const auto &cell : triangulation.active_cell_iterators())
-      {
-        const unsigned int new_cell = cell->active_cell_index();
-        const auto         same     = old_index.find(key_of(cell));
-        if (same != old_index.end())
-        {
-          std::copy_n(state.history.begin() + same->second * n_points,
-                      n_points,
-                      history.begin() + new_cell * n_points);
-          if (has_enhanced)
-            enhanced[new_cell] = state.enhanced_parameters[same->second];
-          continue;
-        }
-        const auto parent = cell->parent();
-        const auto origin = old_index.find(key_of(parent));
-        if (origin == old_index.end())
-          throw std::logic_error("refine_and_transfer: a new cell whose "
-                                 "parent was not active");
-        // The child's points in the parent's unit cell: exact, and
-        // independent of where the new vertices were placed.
-        const unsigned int child = parent->child_iterator_to_index(cell);
-        for (unsigned int q = 0; q < n_points; ++q)
-        {
-          const Point<3> xi = GeometryInfo<3>::child_to_cell_coordinates(
-            quadrature.point(q),
-            child,
-            parent->refinement_case());
-          const fe::QuadraturePointHistory *parent_points
-            = &state.history[origin->second * n_points];
-          history[new_cell * n_points + q]
-            = options.history == HistoryTransfer::interpolated
-                ? interpolate_history(parent_points,
-                                      quadrature,
-                                      xi,
-                                      *options.material)
-                : parent_points[nearest_point(quadrature, xi)];
-        }
-      }
+      std::vector<unsigned int> position_of_cell, holder_of_cell;
+      transfer_records(triangulation,
+                       before,
+                       n_points,
+                       has_enhanced,
+                       options,
+                       state,
+                       position_of_cell,
+                       holder_of_cell);
       // The points of every cell with a moved vertex turn with it from the
       // Q1 to the smooth placement (D87): the stress stays the same in the
       // material frame. (Cells whose vertices did not move keep their axes
       // bit for bit.)
       if (smooth)
+      {
+        const Quadrature<3> quadrature
+          = fe::quadrature_with_weighted_points(n_points);
         for (const auto &cell : triangulation.active_cell_iterators())
         {
           std::array<Point<3>, 8> q1_corners, corners;
@@ -240,19 +322,20 @@ namespace deepdraw
             corners[v]    = cell->vertex(v);
             any_moved     = any_moved || corners[v] != q1_corners[v];
           }
-          if (!any_moved)
+          const std::size_t position
+            = position_of_cell[cell->active_cell_index()];
+          if (!any_moved || position == numbers::invalid_unsigned_int)
             continue;
           for (unsigned int q = 0; q < n_points; ++q)
           {
-            auto &axes
-              = history[cell->active_cell_index() * n_points + q].material_axes;
+            auto &axes = state.history[position * n_points + q].material_axes;
             axes = placement_rotation(q1_corners, corners, quadrature.point(q))
                    * axes;
           }
         }
-      state.history             = std::move(history);
-      state.enhanced_parameters = std::move(enhanced);
-      state.vertices            = triangulation.get_vertices();
+      }
+      state.vertices = triangulation.get_vertices();
+      return holder_of_cell;
     }
   } // namespace adaptivity
 } // namespace deepdraw

@@ -47,5 +47,12 @@ namespace deepdraw
     {
       return slot_of_cell[active_cell_index];
     }
+
+
+    unsigned int
+    OwnedCells::owner(const unsigned int active_cell_index) const
+    {
+      return owner_of_cell[active_cell_index];
+    }
   } // namespace parallel
 } // namespace deepdraw

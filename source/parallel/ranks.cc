@@ -2,7 +2,9 @@
 #include <cstring>
 #include <deal.II/base/mpi.h>
 #include <deepdraw/parallel/ranks.h>
+#include <limits>
 #include <mpi.h>
+#include <stdexcept>
 
 namespace deepdraw
 {
@@ -251,6 +253,55 @@ namespace deepdraw
                    MPI_COMM_WORLD,
                    MPI_STATUS_IGNORE);
       }
+    }
+
+
+    void
+    exchange_records(const void                     *sent,
+                     const std::vector<std::size_t> &sent_counts,
+                     void                           *received,
+                     const std::vector<std::size_t> &receive_counts,
+                     const std::size_t               bytes_per_record)
+    {
+      const unsigned int n = n_ranks();
+      if (n == 1)
+      {
+        std::memcpy(received, sent, sent_counts[0] * bytes_per_record);
+        return;
+      }
+      // Counted in records, not bytes, so that MPI's int counts reach far.
+      const auto as_int = [](const std::size_t value)
+      {
+        if (value > std::size_t(std::numeric_limits<int>::max()))
+          throw std::overflow_error("exchange_records: more records than "
+                                    "an MPI count holds");
+        return int(value);
+      };
+      std::vector<int> counts_out(n), offsets_out(n), counts_in(n),
+        offsets_in(n);
+      std::size_t sent_so_far = 0, received_so_far = 0;
+      for (unsigned int r = 0; r < n; ++r)
+      {
+        counts_out[r]  = as_int(sent_counts[r]);
+        offsets_out[r] = as_int(sent_so_far);
+        counts_in[r]   = as_int(receive_counts[r]);
+        offsets_in[r]  = as_int(received_so_far);
+        sent_so_far += sent_counts[r];
+        received_so_far += receive_counts[r];
+      }
+      MPI_Datatype record;
+      MPI_Type_contiguous(as_int(bytes_per_record), MPI_BYTE, &record);
+      MPI_Type_commit(&record);
+      MPI_Alltoallv(sent,
+                    counts_out.data(),
+                    offsets_out.data(),
+                    record,
+                    received,
+                    counts_in.data(),
+                    offsets_in.data(),
+                    record,
+                    MPI_COMM_WORLD);
+      MPI_Type_free(&record);
     }
 
 

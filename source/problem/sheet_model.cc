@@ -307,23 +307,6 @@ namespace deepdraw
 
 
     void
-    SheetModel::gather_cell_state(state::SimulationState &whole,
-                                  const bool              to_all) const
-    {
-      const parallel::OwnedCells &cells = discretisation.owned_cells();
-      const auto gather = [&](const auto &own, const unsigned int per_cell)
-      {
-        return to_all ? cells.gather_on_all(own, per_cell)
-                      : cells.gather_on_root(own, per_cell);
-      };
-      whole.history
-        = gather(committed.history, discretisation.n_points_per_cell());
-      whole.enhanced_parameters = gather(committed.enhanced_parameters,
-                                         has_enhanced_parameters() ? 1 : 0);
-    }
-
-
-    void
     SheetModel::keep_own_cell_state(state::SimulationState &whole) const
     {
       const parallel::OwnedCells &cells = discretisation.owned_cells();
@@ -338,8 +321,13 @@ namespace deepdraw
     state::SimulationState
     SheetModel::whole_state() const
     {
-      state::SimulationState whole = committed;
-      gather_cell_state(whole, false);
+      state::SimulationState      whole = committed;
+      const parallel::OwnedCells &cells = discretisation.owned_cells();
+      whole.history = cells.gather_on_root(committed.history,
+                                           discretisation.n_points_per_cell());
+      whole.enhanced_parameters
+        = cells.gather_on_root(committed.enhanced_parameters,
+                               has_enhanced_parameters() ? 1 : 0);
       return whole;
     }
 
@@ -364,13 +352,11 @@ namespace deepdraw
                                       committed.previous_converged_solution);
         old_area = blank::nodal_surface_area(discretisation.triangulation());
       }
-      // The transfer reads the parents' state, which another rank may
-      // hold: every rank transfers the whole state and keeps its new cells'
-      // (D217).
-      gather_cell_state(committed, true);
       const std::vector<fe::VertexParents> parents
-        = adaptation.refine(discretisation, committed, *material_model);
-      keep_own_cell_state(committed);
+        = adaptation.refine(discretisation,
+                            committed,
+                            *material_model,
+                            has_enhanced_parameters());
       set_up_system();
       // The transfer kept the displacement blocks of the Newton solutions;
       // the contact blocks are those of the new pairs, started from the

@@ -7,7 +7,11 @@
 //   and the ranks' cells add up to the mesh's, each cell on one rank;
 // - keep_own leaves a rank exactly the records of its cells, in order;
 // - gather_on_all gives every rank every cell's records at their places;
-// - gather_on_root gives rank 0 the same and the other ranks nothing.
+// - gather_on_root gives rank 0 the same and the other ranks nothing;
+// - collect_from_holders gives each rank its cells' records from the ranks
+//   that held them (D220: a refinement's children, made by the rank that
+//   held the parent), with holders unlike the owners and rank 1 holding
+//   none.
 #include "test_utilities.h"
 
 #include <array>
@@ -105,10 +109,26 @@ main(int argc, char **argv)
   const int                 root_wrong
     = parallel::maximum(parallel::is_root() ? (same(at_root, whole) ? 0 : 1)
                                             : (at_root.empty() ? 0 : 1));
+  // Cells held in blocks of 5 by ranks 0 and 2, whatever their owners.
+  std::vector<unsigned int> holder(n_cells);
+  std::vector<Record>       held;
+  for (unsigned int c = 0; c < n_cells; ++c)
+  {
+    holder[c] = (c / 5) % 2 == 0 ? 0 : 2;
+    if (holder[c] == parallel::this_rank())
+      held.insert(held.end(),
+                  whole.begin() + c * items_per_cell,
+                  whole.begin() + (c + 1) * items_per_cell);
+  }
+  const std::vector<Record> collected
+    = cells.collect_from_holders(std::move(held), items_per_cell, holder);
+  const int collect_wrong
+    = parallel::maximum(same(collected, expected_own) && held.empty() ? 0 : 1);
   // An empty record set (no enhanced parameters) stays empty.
   const int empty_wrong = parallel::maximum(
     cells.gather_on_all(std::vector<Record>(), 0).empty()
         && cells.gather_on_root(std::vector<Record>(), 0).empty()
+        && cells.collect_from_holders(std::vector<Record>(), 0, holder).empty()
       ? 0
       : 1);
 
@@ -126,6 +146,9 @@ main(int argc, char **argv)
                all_wrong == 0);
     check_true("gather_on_root: every record on rank 0, none elsewhere",
                root_wrong == 0);
+    check_true("collect_from_holders: each rank its cells' records from "
+               "their holders",
+               collect_wrong == 0);
     check_true("no records stay none", empty_wrong == 0);
   }
   return parallel::is_root() ? summary() : 0;

@@ -62,11 +62,14 @@ namespace deepdraw
                  bool                                 last_increment);
 
       // Refines the flagged cells and carries the committed state over
-      // (history, displacements); returns the parents of every vertex.
+      // (history, displacements); returns the parents of every vertex. The
+      // state holds the records of this rank's cells (D217), with enhanced
+      // parameters or not, before and after.
       std::vector<fe::VertexParents>
       refine(discretisation::SheetDiscretisation &sheet,
              state::SimulationState              &state,
-             const material::ElastoPlasticity    &material) const;
+             const material::ElastoPlasticity    &material,
+             bool                                 enhanced_parameters) const;
 
       // The row of the refinement after its re-equilibration: the Newton
       // residuals at each of its checks and its iterations.

@@ -7,6 +7,7 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/grid/tria.h>
 #include <deepdraw/material/elasto_plasticity.h>
+#include <deepdraw/parallel/owned_cells.h>
 #include <deepdraw/state/simulation_state.h>
 
 namespace deepdraw
@@ -44,6 +45,14 @@ namespace deepdraw
       HistoryTransfer history          = HistoryTransfer::nearest;
       // Needed by HistoryTransfer::interpolated (the yield surface).
       const material::ElastoPlasticity *material = nullptr;
+      // The cells whose records (history, enhanced parameters) `state`
+      // holds: every cell where nullptr; under mpirun this rank's cells of
+      // the mesh before refinement (D220), with the points per cell and
+      // whether the cells have enhanced parameters, which a rank without
+      // cells cannot tell from its records.
+      const parallel::OwnedCells *held_cells          = nullptr;
+      unsigned int                points_per_cell     = 0;
+      bool                        enhanced_parameters = false;
     };
 
     // Refines the triangulation as its refine flags say (isotropic, or any
@@ -66,11 +75,15 @@ namespace deepdraw
     //   options.vertex_placement; the total displacement of a moved vertex
     //   moves with it (its initial position stays the Q1 interpolation of
     //   the blank's), the increments of the Newton solutions do not.
-    // The DoFHandler is redistributed with its element. Throws
-    // std::logic_error if a coarsening flag is set or the state does not
-    // belong to the mesh, std::invalid_argument if options.history needs
-    // the material and it is missing.
-    void
+    // The DoFHandler is redistributed with its element. A rank that holds
+    // some cells' records (options.held_cells) makes those of their
+    // children and keeps them, in the new cells' order; the result says
+    // which rank holds each new active cell's records (this rank for every
+    // cell where options.held_cells is nullptr). Throws std::logic_error
+    // if a coarsening flag is set or the state does not belong to the mesh,
+    // std::invalid_argument if options.history needs the material and it
+    // is missing.
+    std::vector<unsigned int>
     refine_and_transfer(Triangulation<3>       &triangulation,
                         DoFHandler<3>          &dof_handler,
                         state::SimulationState &state,

@@ -2,16 +2,18 @@
 // material state of a cell (the history of its quadrature points, its
 // enhanced parameters) lives only on the rank that evaluates the cell, in
 // the active-cell order of that rank's cells; every cell's records are
-// gathered only where a whole state is needed: on rank 0 for a checkpoint,
-// on every rank for a refinement's state transfer. With one rank a rank's
-// cells are all the cells, in their order.
+// gathered only on rank 0 for a checkpoint. A refinement's new records are
+// made where their parents' are and sent to their cells' ranks (D220). With
+// one rank a rank's cells are all the cells, in their order.
 #ifndef deepdraw_parallel_owned_cells_h
 #define deepdraw_parallel_owned_cells_h
 
+#include <algorithm>
 #include <deal.II/base/types.h>
 #include <deal.II/grid/tria.h>
 #include <deepdraw/parallel/ranks.h>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace deepdraw
@@ -35,6 +37,9 @@ namespace deepdraw
       // numbers::invalid_unsigned_int for another rank's cell.
       unsigned int
       slot(unsigned int active_cell_index) const;
+      // The rank that evaluates an active cell.
+      unsigned int
+      owner(unsigned int active_cell_index) const;
 
       // This rank's share of records kept per cell: items_per_cell items
       // for each cell of `whole`, by active cell index.
@@ -53,6 +58,18 @@ namespace deepdraw
       std::vector<T>
       gather_on_root(const std::vector<T> &own,
                      unsigned int          items_per_cell) const;
+
+      // This rank's share of records that other ranks computed (D220):
+      // holder_of_cell[c] is the rank that holds cell c's records, and
+      // `held` this rank's held records, items_per_cell items for each cell
+      // it holds, in the cells' order. Each rank sends every held cell's
+      // records to the cell's owner; `held` is emptied on the way.
+      template <typename T>
+      std::vector<T>
+      collect_from_holders(
+        std::vector<T>                 &&held,
+        unsigned int                     items_per_cell,
+        const std::vector<unsigned int> &holder_of_cell) const;
 
     private:
       std::vector<unsigned int> owner_of_cell;
@@ -144,6 +161,59 @@ namespace deepdraw
           place_share(rank, items_per_cell, share.data(), whole.data());
       }
       return whole;
+    }
+
+
+    template <typename T>
+    std::vector<T>
+    OwnedCells::collect_from_holders(
+      std::vector<T>                 &&held,
+      const unsigned int               items_per_cell,
+      const std::vector<unsigned int> &holder_of_cell) const
+    {
+      static_assert(std::is_trivially_copyable<T>::value,
+                    "records are sent as bytes");
+      if (n_ranks() == 1 || items_per_cell == 0)
+        return std::move(held);
+      const unsigned int       me = this_rank();
+      std::vector<std::size_t> n_out(n_ranks(), 0), n_in(n_ranks(), 0);
+      for (std::size_t cell = 0; cell < owner_of_cell.size(); ++cell)
+      {
+        n_out[owner_of_cell[cell]] += holder_of_cell[cell] == me;
+        n_in[holder_of_cell[cell]] += owner_of_cell[cell] == me;
+      }
+      // The held records by their owner, each owner's in the cells' order.
+      std::vector<std::size_t> next(n_ranks(), 0);
+      for (unsigned int rank = 1; rank < n_ranks(); ++rank)
+        next[rank] = next[rank - 1] + n_out[rank - 1];
+      std::vector<T> out(held.size());
+      std::size_t    position = 0;
+      for (std::size_t cell = 0; cell < owner_of_cell.size(); ++cell)
+        if (holder_of_cell[cell] == me)
+          std::copy_n(held.begin() + items_per_cell * position++,
+                      items_per_cell,
+                      out.begin()
+                        + items_per_cell * next[owner_of_cell[cell]]++);
+      std::vector<T>().swap(held);
+      std::vector<T> in(std::size_t(n_owned()) * items_per_cell);
+      exchange_records(out.data(),
+                       n_out,
+                       in.data(),
+                       n_in,
+                       items_per_cell * sizeof(T));
+      std::vector<T>().swap(out);
+      // Received by holder, each holder's in the cells' order.
+      next.assign(n_ranks(), 0);
+      for (unsigned int rank = 1; rank < n_ranks(); ++rank)
+        next[rank] = next[rank - 1] + n_in[rank - 1];
+      std::vector<T> own(in.size());
+      for (std::size_t cell = 0; cell < owner_of_cell.size(); ++cell)
+        if (owner_of_cell[cell] == me)
+          std::copy_n(in.begin()
+                        + items_per_cell * next[holder_of_cell[cell]]++,
+                      items_per_cell,
+                      own.begin() + items_per_cell * slot_of_cell[cell]);
+      return own;
     }
   } // namespace parallel
 } // namespace deepdraw

@@ -68,6 +68,17 @@ namespace deepdraw
                  std::size_t  bytes,
                  unsigned int from);
 
+    // Each rank sends sent_counts[s] records of bytes_per_record bytes,
+    // consecutive in `sent` by destination, to rank s and receives
+    // receive_counts[s] records from rank s, consecutive in `received` by
+    // source (a refinement's cell records to the cells' new ranks, D220).
+    void
+    exchange_records(const void                     *sent,
+                     const std::vector<std::size_t> &sent_counts,
+                     void                           *received,
+                     const std::vector<std::size_t> &receive_counts,
+                     std::size_t                     bytes_per_record);
+
     // Records computed by their owners, sent to every rank in place: data
     // holds bytes_per_owner bytes for each i of owners, computed by rank
     // owners[i] (a cell's trial state, D215).

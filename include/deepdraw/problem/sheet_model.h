@@ -208,11 +208,6 @@ namespace deepdraw
       // (incompatible modes).
       bool
       has_enhanced_parameters() const;
-      // The committed history and enhanced parameters of every cell, on
-      // every rank (to_all) or on rank 0 (each rank holds its own cells',
-      // D217).
-      void
-      gather_cell_state(state::SimulationState &whole, bool to_all) const;
       // Each rank's own cells' records of a whole cell state.
       void
       keep_own_cell_state(state::SimulationState &whole) const;
