@@ -310,6 +310,8 @@ namespace deepdraw
     SheetModel::keep_own_cell_state(state::SimulationState &whole) const
     {
       const parallel::OwnedCells &cells = discretisation.owned_cells();
+      if (cells.n_owned() == cells.n_cells())
+        return; // one rank: its own are all, and not copied (D221)
       whole.history
         = cells.keep_own(whole.history, discretisation.n_points_per_cell());
       whole.enhanced_parameters
@@ -319,9 +321,33 @@ namespace deepdraw
 
 
     state::SimulationState
-    SheetModel::whole_state() const
+    SheetModel::whole_state()
     {
-      state::SimulationState      whole = committed;
+      // The cell records are set aside while the rest is copied, and put
+      // back also if the copy fails: gathered below, they are not copied
+      // twice (D221).
+      state::SimulationState whole;
+      {
+        std::vector<fe::QuadraturePointHistory> history
+          = std::move(committed.history);
+        std::vector<fe::EnhancedParameters> enhanced
+          = std::move(committed.enhanced_parameters);
+        const auto put_back = [&]()
+        {
+          committed.history             = std::move(history);
+          committed.enhanced_parameters = std::move(enhanced);
+        };
+        try
+        {
+          whole = committed;
+        }
+        catch (...)
+        {
+          put_back();
+          throw;
+        }
+        put_back();
+      }
       const parallel::OwnedCells &cells = discretisation.owned_cells();
       whole.history = cells.gather_on_root(committed.history,
                                            discretisation.n_points_per_cell());

@@ -2,7 +2,9 @@
 #include <cstdlib>
 #include <deepdraw/io/binary_stream.h>
 #include <deepdraw/io/checksum.h>
+#include <deepdraw/io/checksummed_output.h>
 #include <deepdraw/io/input_error.h>
+#include <deepdraw/io/memory_input.h>
 #include <deepdraw/io/output_directory.h>
 #include <deepdraw/io/printable_text.h>
 #include <deepdraw/io/pvd_record.h>
@@ -223,10 +225,12 @@ namespace deepdraw
     }
 
 
-    std::string
-    checkpoint_image(const Checkpoint &checkpoint)
+    void
+    write_checkpoint_image(std::ostream &target, const Checkpoint &checkpoint)
     {
-      std::ostringstream stream(std::ios::binary);
+      // Straight to the target, the CRC-32 taken on the way: no image of
+      // the whole checkpoint in memory (D221).
+      io::ChecksummedOutput stream(target);
       stream.write(tag, sizeof(tag));
       io::write_string(stream, checkpoint.parameters);
       checkpoint.state.write(stream);
@@ -238,10 +242,8 @@ namespace deepdraw
         io::write_string(stream, data);
       }
       write_input_files(stream, checkpoint.input_files);
-      std::string         image = stream.str();
-      const std::uint32_t crc   = io::crc32(image.data(), image.size());
-      image.append(reinterpret_cast<const char *>(&crc), sizeof(crc));
-      return image;
+      const std::uint32_t crc = stream.crc();
+      target.write(reinterpret_cast<const char *>(&crc), sizeof(crc));
     }
 
 
@@ -250,11 +252,20 @@ namespace deepdraw
     {
       if (!io::writes_files())
         return;
-      const std::string image     = checkpoint_image(checkpoint);
       const std::string temporary = filename + ".tmp";
       {
         std::ofstream stream(temporary, std::ios::binary);
-        stream.write(image.data(), image.size());
+        try
+        {
+          write_checkpoint_image(stream, checkpoint);
+        }
+        catch (...)
+        {
+          stream.close();
+          std::error_code ignored;
+          std::filesystem::remove(temporary, ignored);
+          throw;
+        }
         stream.flush();
         if (!stream)
         {
@@ -305,9 +316,9 @@ namespace deepdraw
               "stored in it (the file was changed or damaged after it was "
               "written)");
         }
-        std::istringstream stream(bytes.substr(sizeof(tag),
-                                               content - sizeof(tag)),
-                                  std::ios::binary);
+        // Parsed where it lies: no copy of the file's bytes (D221).
+        io::MemoryInput stream(bytes.data() + sizeof(tag),
+                               content - sizeof(tag));
         read_fields(stream, read_tag.c_str(), checkpoint);
       }
       catch (const std::runtime_error &error)
@@ -335,9 +346,19 @@ namespace deepdraw
                          + " (checkpoints are written every Checkpoint/"
                            "Interval increments, at the end of every stage "
                            "but the last, and at a clean stop)");
-      std::ostringstream bytes(std::ios::binary);
-      bytes << stream.rdbuf();
-      return parse_checkpoint(bytes.str(), filename);
+      // Read once into a string of the file's size (D221).
+      std::string bytes;
+      stream.seekg(0, std::ios::end);
+      const std::streamoff size = stream.tellg();
+      stream.seekg(0, std::ios::beg);
+      if (size > 0)
+      {
+        bytes.resize(std::size_t(size));
+        stream.read(bytes.data(), size);
+      }
+      if (size < 0 || !stream)
+        throw InputError("--resume: cannot read the checkpoint " + filename);
+      return parse_checkpoint(bytes, filename);
     }
 
 

@@ -74,16 +74,18 @@ namespace deepdraw
 
       // Every value of a block must be finite (a damaged checkpoint of a
       // format without a checksum).
+      // first: the place of values[0] in the block, for the message.
       void
       check_finite(const double      *values,
                    const std::size_t  n,
-                   const std::string &what)
+                   const std::string &what,
+                   const std::size_t  first = 0)
       {
         for (std::size_t i = 0; i < n; ++i)
           if (!std::isfinite(values[i]))
-            throw std::runtime_error(what + ": value " + std::to_string(i)
-                                     + " is " + io::to_string(values[i])
-                                     + ", not a finite number");
+            throw std::runtime_error(
+              what + ": value " + std::to_string(first + i) + " is "
+              + io::to_string(values[i]) + ", not a finite number");
       }
 
       // The doubles of one quadrature point: stress, back stress (6 + 6
@@ -120,6 +122,52 @@ namespace deepdraw
         for (unsigned int i = 0; i < 3; ++i)
           for (unsigned int j = 0; j < 3; ++j)
             point.material_axes[i][j] = values[k++];
+      }
+
+      // The history's points are packed and unpacked a block at a time, so
+      // that no copy of the whole history is made (D221).
+      constexpr std::size_t points_per_block = 4096;
+
+      void
+      put_history(std::ostream                                  &stream,
+                  const std::vector<fe::QuadraturePointHistory> &history)
+      {
+        put(stream, doubles_per_point * history.size());
+        std::vector<double> block;
+        for (std::size_t first = 0; first < history.size();
+             first += points_per_block)
+        {
+          const std::size_t n
+            = std::min(points_per_block, history.size() - first);
+          block.resize(doubles_per_point * n);
+          for (std::size_t q = 0; q < n; ++q)
+            pack(history[first + q], &block[doubles_per_point * q]);
+          stream.write(reinterpret_cast<const char *>(block.data()),
+                       block.size() * sizeof(double));
+        }
+      }
+
+      // n_points points whose count of doubles has been read; the count
+      // was checked against the bytes left (get_count).
+      void
+      get_history(std::istream                            &stream,
+                  const std::size_t                        n_points,
+                  std::vector<fe::QuadraturePointHistory> &history)
+      {
+        history.resize(n_points);
+        std::vector<double> block;
+        for (std::size_t first = 0; first < n_points; first += points_per_block)
+        {
+          const std::size_t n = std::min(points_per_block, n_points - first);
+          block.resize(doubles_per_point * n);
+          get_values(stream, block.data(), block.size());
+          check_finite(block.data(),
+                       block.size(),
+                       "history",
+                       doubles_per_point * first);
+          for (std::size_t q = 0; q < n; ++q)
+            unpack(&block[doubles_per_point * q], history[first + q]);
+        }
       }
 
       // A cell's enhanced parameters as stored, for n of them: values,
@@ -298,10 +346,7 @@ namespace deepdraw
       put_vector(stream, total_displacement);
       put_vector(stream, converged_solution);
       put_vector(stream, previous_converged_solution);
-      std::vector<double> points(doubles_per_point * history.size());
-      for (std::size_t q = 0; q < history.size(); ++q)
-        pack(history[q], &points[doubles_per_point * q]);
-      put_doubles(stream, points.data(), points.size());
+      put_history(stream, history);
       if (thickness_modes)
         put(stream, n_enhanced);
       put(stream, enhanced_parameters.size());
@@ -378,12 +423,7 @@ namespace deepdraw
       n = get_count(stream, sizeof(double), "history");
       if (n % doubles_per_point != 0)
         throw std::runtime_error("simulation state: bad history block");
-      std::vector<double> points(n);
-      get_values(stream, points.data(), n);
-      check_finite(points.data(), n, "history");
-      history.resize(n / doubles_per_point);
-      for (std::size_t q = 0; q < history.size(); ++q)
-        unpack(&points[doubles_per_point * q], history[q]);
+      get_history(stream, n / doubles_per_point, history);
       unsigned int n_enhanced = 9;
       if (thickness_modes)
       {

@@ -159,7 +159,7 @@ namespace deepdraw
       // parameters, on rank 0 (a checkpoint); every rank must call it, and
       // the other ranks' copies hold no cell records.
       state::SimulationState
-      whole_state() const;
+      whole_state();
       // Internal nodal forces of the last assembly.
       const Vector<double> &
       internal_force() const;

@@ -84,9 +84,11 @@ namespace deepdraw
     Checkpoint
     parse_checkpoint(const std::string &bytes, const std::string &filename);
 
-    // The checksummed image of a checkpoint (what write_checkpoint writes).
-    std::string
-    checkpoint_image(const Checkpoint &checkpoint);
+    // Writes the checksummed image of a checkpoint (what write_checkpoint
+    // writes) to a stream; throws std::runtime_error if the state cannot be
+    // written.
+    void
+    write_checkpoint_image(std::ostream &stream, const Checkpoint &checkpoint);
 
     // Every parameter as "Subsection/Name = value", one per line, in
     // declaration order.
