@@ -244,6 +244,9 @@ namespace deepdraw
       write_input_files(stream, checkpoint.input_files);
       const std::uint32_t crc = stream.crc();
       target.write(reinterpret_cast<const char *>(&crc), sizeof(crc));
+      // A write that failed on the way (a full disk) fails the target.
+      if (!stream)
+        target.setstate(std::ios::badbit);
     }
 
 
@@ -258,6 +261,11 @@ namespace deepdraw
         try
         {
           write_checkpoint_image(stream, checkpoint);
+        }
+        catch (const std::runtime_error &)
+        {
+          // The state's writer found the stream failed: said below.
+          stream.setstate(std::ios::badbit);
         }
         catch (...)
         {

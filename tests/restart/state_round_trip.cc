@@ -5,12 +5,15 @@
 // bit for bit; a stream cut short, or one that is not a state, is rejected.
 // With 2 Gauss points through the thickness (9 enhanced parameters a cell,
 // format 5) and with 4 (15, the through-thickness modes' among them
-// non-zero: format 6, D202).
+// non-zero: format 6, D202). A history of more points than are packed at a
+// time, and a checkpoint written to a full disk (D221).
 #include "contact/forming_test_tools.h"
 #include "test_utilities.h"
 
 #include <deal.II/base/mpi.h>
 #include <deepdraw/problem/forming_problem.h>
+#include <deepdraw/state/checkpoint.h>
+#include <fstream>
 #include <sstream>
 
 using namespace dealii;
@@ -200,6 +203,54 @@ end
     deepdraw_test::check_true(name + "a foreign stream is rejected",
                               foreign_rejected);
   }
+
+  // More points than the writer packs at a time (4 096, D221), the last
+  // block part full: every point read back bit for bit, its values naming
+  // it. The checkpoint's image written to a full disk (/dev/full) fails.
+  void
+  many_points()
+  {
+    state::SimulationState saved;
+    saved.next_increment = 0.1;
+    saved.history.resize(2 * 4096 + 5);
+    for (std::size_t q = 0; q < saved.history.size(); ++q)
+    {
+      fe::QuadraturePointHistory &point     = saved.history[q];
+      point.state.equivalent_plastic_strain = 1e-6 * double(q);
+      point.state.stress[0][1]              = double(q);
+      point.material_axes[2][0]             = -double(q);
+    }
+    std::stringstream stream(std::ios::in | std::ios::out | std::ios::binary);
+    saved.write(stream);
+    state::SimulationState read;
+    read.read(stream);
+    bool same = read.history.size() == saved.history.size();
+    for (std::size_t q = 0; same && q < saved.history.size(); ++q)
+      same = read.history[q].state.equivalent_plastic_strain
+               == saved.history[q].state.equivalent_plastic_strain
+             && read.history[q].state.stress == saved.history[q].state.stress
+             && read.history[q].material_axes == saved.history[q].material_axes;
+    deepdraw_test::check_true("8 197 points, three blocks: read back bit for "
+                              "bit",
+                              same);
+
+    state::Checkpoint checkpoint;
+    checkpoint.state = saved;
+    std::ofstream full("/dev/full", std::ios::binary);
+    bool          failed = false;
+    try
+    {
+      state::write_checkpoint_image(full, checkpoint);
+      full.flush();
+      failed = !full;
+    }
+    catch (const std::runtime_error &)
+    {
+      failed = true;
+    }
+    deepdraw_test::check_true("a checkpoint written to a full disk fails",
+                              failed);
+  }
 } // namespace
 
 int
@@ -208,5 +259,6 @@ main(int argc, char *argv[])
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   round_trip(2);
   round_trip(4);
+  many_points();
   return deepdraw_test::summary();
 }
