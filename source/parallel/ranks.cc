@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
 #include <deal.II/base/mpi.h>
 #include <deepdraw/parallel/ranks.h>
@@ -135,12 +136,15 @@ namespace deepdraw
 
     namespace
     {
-      // MPI_Alltoallv of vectors of trivially copyable items, as bytes.
+      // Vectors of trivially copyable items to each rank: the receivers
+      // learn their counts first, then exchange_records moves the items.
       template <typename T>
       void
       exchange_items(const std::vector<std::vector<T>> &to_rank,
                      std::vector<std::vector<T>>       &from_rank)
       {
+        static_assert(sizeof(std::size_t) == sizeof(std::uint64_t),
+                      "counts are sent as 64-bit integers");
         const unsigned int n = n_ranks();
         from_rank.assign(n, {});
         if (n == 1)
@@ -148,46 +152,34 @@ namespace deepdraw
           from_rank[0] = to_rank[0];
           return;
         }
-        std::vector<int> send_counts(n), receive_counts(n), send_offsets(n),
-          receive_offsets(n);
-        std::vector<char> send_buffer;
+        std::vector<std::size_t> send_counts(n), receive_counts(n);
+        std::vector<T>           sent;
         for (unsigned int r = 0; r < n; ++r)
         {
-          send_offsets[r]   = send_buffer.size();
-          send_counts[r]    = to_rank[r].size() * sizeof(T);
-          const char *bytes = reinterpret_cast<const char *>(to_rank[r].data());
-          send_buffer.insert(send_buffer.end(), bytes, bytes + send_counts[r]);
+          send_counts[r] = to_rank[r].size();
+          sent.insert(sent.end(), to_rank[r].begin(), to_rank[r].end());
         }
         MPI_Alltoall(send_counts.data(),
                      1,
-                     MPI_INT,
+                     MPI_UINT64_T,
                      receive_counts.data(),
                      1,
-                     MPI_INT,
+                     MPI_UINT64_T,
                      MPI_COMM_WORLD);
         std::size_t total = 0;
+        for (const std::size_t count : receive_counts)
+          total += count;
+        std::vector<T> received(total);
+        exchange_records(sent.data(),
+                         send_counts,
+                         received.data(),
+                         receive_counts,
+                         sizeof(T));
+        auto first = received.begin();
         for (unsigned int r = 0; r < n; ++r)
         {
-          receive_offsets[r] = total;
-          total += receive_counts[r];
-        }
-        std::vector<char> receive_buffer(total);
-        MPI_Alltoallv(send_buffer.data(),
-                      send_counts.data(),
-                      send_offsets.data(),
-                      MPI_BYTE,
-                      receive_buffer.data(),
-                      receive_counts.data(),
-                      receive_offsets.data(),
-                      MPI_BYTE,
-                      MPI_COMM_WORLD);
-        for (unsigned int r = 0; r < n; ++r)
-        {
-          from_rank[r].resize(receive_counts[r] / sizeof(T));
-          std::copy(receive_buffer.begin() + receive_offsets[r],
-                    receive_buffer.begin() + receive_offsets[r]
-                      + receive_counts[r],
-                    reinterpret_cast<char *>(from_rank[r].data()));
+          from_rank[r].assign(first, first + receive_counts[r]);
+          first += receive_counts[r];
         }
       }
     } // namespace

@@ -310,12 +310,10 @@ namespace deepdraw
     SheetModel::keep_own_cell_state(state::SimulationState &whole) const
     {
       const parallel::OwnedCells &cells = discretisation.owned_cells();
-      if (cells.n_owned() == cells.n_cells())
-        return; // one rank: its own are all, and not copied (D221)
-      whole.history
-        = cells.keep_own(whole.history, discretisation.n_points_per_cell());
+      whole.history = cells.keep_own(std::move(whole.history),
+                                     discretisation.n_points_per_cell());
       whole.enhanced_parameters
-        = cells.keep_own(whole.enhanced_parameters,
+        = cells.keep_own(std::move(whole.enhanced_parameters),
                          has_enhanced_parameters() ? 1 : 0);
     }
 

@@ -42,10 +42,11 @@ namespace deepdraw
       owner(unsigned int active_cell_index) const;
 
       // This rank's share of records kept per cell: items_per_cell items
-      // for each cell of `whole`, by active cell index.
+      // for each cell of `whole`, by active cell index; `whole` itself
+      // where this rank owns every cell (one rank), not copied.
       template <typename T>
       std::vector<T>
-      keep_own(const std::vector<T> &whole, unsigned int items_per_cell) const;
+      keep_own(std::vector<T> whole, unsigned int items_per_cell) const;
       // Every cell's records on every rank, from each rank's share.
       template <typename T>
       std::vector<T>
@@ -104,9 +105,11 @@ namespace deepdraw
 
     template <typename T>
     std::vector<T>
-    OwnedCells::keep_own(const std::vector<T> &whole,
-                         const unsigned int    items_per_cell) const
+    OwnedCells::keep_own(std::vector<T>     whole,
+                         const unsigned int items_per_cell) const
     {
+      if (n_owned() == n_cells())
+        return whole;
       std::vector<T> own;
       own.reserve(std::size_t(n_owned()) * items_per_cell);
       for (std::size_t cell = 0; cell < owner_of_cell.size(); ++cell)
@@ -182,12 +185,18 @@ namespace deepdraw
         n_out[owner_of_cell[cell]] += holder_of_cell[cell] == me;
         n_in[holder_of_cell[cell]] += owner_of_cell[cell] == me;
       }
+      // Where each rank's records start among records grouped by rank.
+      const auto starts = [](const std::vector<std::size_t> &counts)
+      {
+        std::vector<std::size_t> first(counts.size(), 0);
+        for (std::size_t rank = 1; rank < counts.size(); ++rank)
+          first[rank] = first[rank - 1] + counts[rank - 1];
+        return first;
+      };
       // The held records by their owner, each owner's in the cells' order.
-      std::vector<std::size_t> next(n_ranks(), 0);
-      for (unsigned int rank = 1; rank < n_ranks(); ++rank)
-        next[rank] = next[rank - 1] + n_out[rank - 1];
-      std::vector<T> out(held.size());
-      std::size_t    position = 0;
+      std::vector<std::size_t> next = starts(n_out);
+      std::vector<T>           out(held.size());
+      std::size_t              position = 0;
       for (std::size_t cell = 0; cell < owner_of_cell.size(); ++cell)
         if (holder_of_cell[cell] == me)
           std::copy_n(held.begin() + items_per_cell * position++,
@@ -203,9 +212,7 @@ namespace deepdraw
                        items_per_cell * sizeof(T));
       std::vector<T>().swap(out);
       // Received by holder, each holder's in the cells' order.
-      next.assign(n_ranks(), 0);
-      for (unsigned int rank = 1; rank < n_ranks(); ++rank)
-        next[rank] = next[rank - 1] + n_in[rank - 1];
+      next = starts(n_in);
       std::vector<T> own(in.size());
       for (std::size_t cell = 0; cell < owner_of_cell.size(); ++cell)
         if (owner_of_cell[cell] == me)
