@@ -20,30 +20,25 @@ Expectations independent of the code:
   increments converge (at most 18 Newton iterations each: measured 9 in
   the first, 5 to 7 in the nine others; the bound is twice the largest).
 
-- the same draw released by tool retraction (resumed from the checkpoint
-  at the end of the draw; the die 20 mm outwards, the holder 3 mm up, the
-  punch 30 mm up, the die 30 mm down, D198) frees the part of every tool
-  (the run ends with exit 0 only then) and leaves the shape of the force
-  release: both methods release the same loaded part, the retraction only
-  with the friction of the flange dragged under the lifted holder on top.
-  Measured: theta1 0.005 deg, theta2 0.13 deg, rho 0.4 % apart; asserted
-  0.3 deg and 1 %.
-  The law is not robust (the die at 6 mm per unit stops in the punch's
-  lift, D198): a failure here on another machine may be the path's
-  round-off (D190) before it is a fault.
-- the same again with the law and the settings of prm/u_channel_retraction.prm
-  (D208: the holder up, the die out and down at once, the punch up out of
-  the channel; a viscous stabilization 0.002 falling to 0 before the
-  stage's end, the stage's Newton tolerance 1e-5, one iteration at least):
-  since c is 0 at the end, its last state is a static one, and the same
-  bounds hold. Measured: 0.005 deg, 0.07 deg, 0.3 % (253 increments,
-  about 20 s alone).
-The draw has the prm's Contact/Augmentation scaling 0.005: with D156's
-0.05 no retraction law got the part free of the second tool (D197, D198);
-and the prm's Newton settings (up to 100 iterations, no separate bound on
-the holder's force, D205). Measured on 2 cores: 51 s for the draw and the
-force release (107 + 10 increments with the tolerances 1e-4), 26 s for
-the retraction (123 increments; both beside another run).
+- the same draw released by tool retraction with the law and the settings
+  of prm/u_channel_retraction.prm, resumed from the checkpoint at the end
+  of the draw (D208: the holder up, the die out and down at once, the
+  punch up out of the channel; a viscous stabilization 0.002 falling to 0
+  before the stage's end, the stage's Newton tolerance 1e-5, one
+  iteration at least) frees the part of every tool (the run ends with exit
+  0 only then) and leaves the shape of the force release: both methods
+  release the same loaded part, and since c is 0 at the end, the last
+  state is a static one. Measured: 0.005 deg, 0.07 deg, 0.3 % (Intel
+  Xeon, 253 increments, about 20 s alone); 0.003 deg, 0.10 deg, 0.003 %
+  (AMD EPYC, 274 increments, 24 s); asserted 0.3 deg and 1 %.
+  Not asserted: the tools in turn without these settings (D198's law).
+  That path is not robust: on an AMD EPYC it stops in the holder's lift,
+  its flange pairs switching stick and slip in a cycle (D222).
+The draw has the prm's Contact/Augmentation scaling 0.005 (D198) and the
+prm's Newton settings (up to 100 iterations, no separate bound on the
+holder's force, D205). Measured on 2 cores: 51 s for the draw and the
+force release (107 + 10 increments with the tolerances 1e-4, beside
+another run).
 
     u_channel_test.py --deepdraw EXE --source-dir REPO --work-dir DIR
 """
@@ -70,31 +65,8 @@ PARTS = "bottom: 0, 20; wall: 40, 50; flange: 65, 165"
 BEFORE_TOLERANCE = math.degrees(math.atan(0.22 / 10.))
 THETA2_FALL = 1.0          # deg; measured 2.57
 RELEASE_ITERATIONS = 18    # per increment; measured at most 9 (twice that)
-ANGLE_AGREEMENT = 0.3      # deg, retraction against force; measured 0.13
-RHO_AGREEMENT = 0.01       # relative; measured 0.004
-# The retraction (module docstring): each tool in turn, from the end of the
-# draw at t = STROKE.
-RETRACTION = """subsection Process
-  set Final load = %(end)g
-  subsection Stage 2
-    set Release method = tool retraction
-    subsection Tool 1
-      set Translation = 0; 0; 3*max(0, min(t-%(s)g-5, 10))
-    end
-    subsection Tool 2
-      set Translation = 5*min(t-%(s)g, 4); 0; -15*max(0, t-%(s)g-15)
-    end
-    subsection Tool 3
-      set Control     = displacement
-      set Translation = 0; 0; 3*max(0, min(t-%(s)g-4, 1))
-    end
-    subsection Load stepping
-      set Initial increment = 0.1
-      set Maximum increment = 0.5
-    end
-  end
-end
-""" % {"s": STROKE, "end": STROKE + 17}
+ANGLE_AGREEMENT = 0.3      # deg, retraction against force; measured 0.10
+RHO_AGREEMENT = 0.01       # relative; measured 0.003 at most
 # The law of prm/u_channel_retraction.prm (D208) at this stroke: the punch
 # 40 mm up, out of the 25 mm channel.
 STABILIZED = """subsection Process
@@ -194,7 +166,6 @@ def main():
     if len(release) != 10 or max(iterations) > RELEASE_ITERATIONS:
         failures.append("release: %d increments, iterations %s"
                         % (len(release), iterations))
-    check_retraction(args, work, after, checks, "retraction", RETRACTION)
     check_retraction(args, work, after, checks, "stabilized", STABILIZED)
     script_test.finish(failures)
 
