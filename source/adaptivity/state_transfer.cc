@@ -314,6 +314,11 @@ namespace deepdraw
           = fe::quadrature_with_weighted_points(n_points);
         for (const auto &cell : triangulation.active_cell_iterators())
         {
+          // Only the cells whose records this rank holds.
+          const std::size_t position
+            = position_of_cell[cell->active_cell_index()];
+          if (position == numbers::invalid_unsigned_int)
+            continue;
           std::array<Point<3>, 8> q1_corners, corners;
           bool                    any_moved = false;
           for (const unsigned int v : cell->vertex_indices())
@@ -322,9 +327,7 @@ namespace deepdraw
             corners[v]    = cell->vertex(v);
             any_moved     = any_moved || corners[v] != q1_corners[v];
           }
-          const std::size_t position
-            = position_of_cell[cell->active_cell_index()];
-          if (!any_moved || position == numbers::invalid_unsigned_int)
+          if (!any_moved)
             continue;
           for (unsigned int q = 0; q < n_points; ++q)
           {
