@@ -30,7 +30,8 @@ Expectations independent of the code:
   release the same loaded part, and since c is 0 at the end, the last
   state is a static one. Measured: 0.005 deg, 0.07 deg, 0.3 % (Intel
   Xeon, 253 increments, about 20 s alone); 0.003 deg, 0.10 deg, 0.003 %
-  (AMD EPYC, 274 increments, 24 s); asserted 0.3 deg and 1 %.
+  (AMD EPYC, 161 retraction increments after the draw's 113, 24 s);
+  asserted 0.3 deg and 1 %.
   Not asserted: the tools in turn without these settings (D198's law).
   That path is not robust: on an AMD EPYC it stops in the holder's lift,
   its flange pairs switching stick and slip in a cycle (D222).
