@@ -17,6 +17,9 @@
 # (default MUMPS; doc/results.md § Algebraic multigrid).
 # REUSE=true|false|auto sets Linear solver/Reuse factorisation (default
 # auto since D206: on for 50 x 50 and finer; false for the figures before).
+# PRECISION=double|single|auto sets Linear solver/Factorisation precision
+# (default auto since D226: single-precision factors where factorisations
+# are reused; double for the figures before).
 # DEEPDRAW selects the executable (default build/deepdraw). Outputs and
 # wall_time.png go to a fresh temporary directory (printed, kept). The
 # figures are wall-clock times: run it on an otherwise idle machine.
@@ -28,6 +31,7 @@ travel=${1:-8.1}
 meshes=${*:-25 50 100 150}
 solver=${SOLVER:-MUMPS}
 reuse=${REUSE:-auto}
+precision=${PRECISION:-auto}
 output=$(mktemp -d /tmp/square_cup_meshes.XXXXXX)
 [ -x "$deepdraw" ] || { echo "square_cup_meshes.sh: $deepdraw missing" >&2; exit 1; }
 
@@ -46,6 +50,7 @@ end
 subsection Linear solver
   set Type = $solver
   set Reuse factorisation = $reuse
+  set Factorisation precision = $precision
 end
 PRM
   measure=""

@@ -75,9 +75,9 @@ namespace deepdraw
         }
 
         void
-        reset_reduction() override
+        reset_reduction(const bool continues_stage) override
         {
-          linear_solver.reset_reduction();
+          linear_solver.reset_reduction(continues_stage);
           // The mesh moves between increments (updated Lagrangian).
           rigid_body_modes_stale = true;
         }

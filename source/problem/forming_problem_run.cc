@@ -171,6 +171,13 @@ namespace deepdraw
           + std::to_string(statistics.gmres_iterations)
           + " GMRES iterations in all)");
       }
+      if (statistics.single_precision_factorizations > 0)
+        summaries.push_back(
+          "linear solver: "
+          + std::to_string(statistics.single_precision_factorizations)
+          + " factorisations in single precision, refined by GMRES; "
+          + std::to_string(statistics.single_precision_fallbacks)
+          + " systems factorised again in double (D226)");
       if (parameters.linear_solver.iterative())
       {
         summaries.push_back(

@@ -95,7 +95,10 @@ namespace deepdraw
                                    const double enhanced_ratio)
     {
       prepare_increment(old_load, new_load);
-      model.linear_system().reset_reduction();
+      // A stage's first increment (its tools start touching the sheet,
+      // D92) factorises in double precision (D226).
+      model.linear_system().reset_reduction(model.state().last_load_increment
+                                            > 0.);
       // Displacement increment 0; contact forces and tool positions start
       // from their converged values (the tangent predictor's start).
       start_from_converged_state();

@@ -27,7 +27,7 @@ namespace deepdraw
       {
         if (mumps == nullptr)
           mumps = std::make_unique<MumpsFactorization>(scale_matrix);
-        mumps->factorize(matrix, owned);
+        mumps->factorize(matrix, owned, precision);
         return;
       }
       // KLU through Amesos. The old solver refers to the old problem and

@@ -91,6 +91,29 @@ namespace deepdraw
                         Patterns::Integer(1, 1000),
                         "GMRES iterations with a kept factorisation before "
                         "the system is factorised afresh (D185).");
+      prm.declare_entry(
+        "Factorisation precision",
+        "auto",
+        Patterns::Selection("double|single|auto"),
+        "Arithmetic of MUMPS' factors. 'single': single precision, about a "
+        "third less time per factorisation on 100 x 100 x 2; each solve is "
+        "refined by GMRES in double, right "
+        "preconditioned with those factors, to `Single precision "
+        "tolerance` after a factorisation and to the forcing term with "
+        "kept factors, and a system the refinement does not solve is "
+        "factorised again in double. The first increment of a stage "
+        "factorises in double: its contact states start inside the tools "
+        "and its Newton path is sensitive to round-off (doc/decisions.md "
+        "D226). 'auto': single precision where Reuse factorisation = auto "
+        "reuses factorisations (systems of at least Reuse threshold "
+        "unknowns), double elsewhere. 'single' needs Type MUMPS.");
+      prm.declare_entry("Single precision tolerance",
+                        "1e-3",
+                        Patterns::Double(1e-12, 0.5),
+                        "Factorisation precision single: relative linear "
+                        "residual |b - A x| / |b| to which GMRES refines the "
+                        "solve after a single-precision factorisation "
+                        "(D226).");
       prm.declare_entry("AMG tolerance",
                         "1e-8",
                         Patterns::Double(1e-14, 0.1),
@@ -132,7 +155,17 @@ namespace deepdraw
                          + " is larger than Linear solver/Forcing term = "
                          + prm.get("Forcing term")
                          + ": allowed is at most the forcing term");
-      reuse_iterations       = prm.get_integer("Reuse iterations");
+      reuse_iterations                 = prm.get_integer("Reuse iterations");
+      const std::string precision_text = prm.get("Factorisation precision");
+      precision = precision_text == "double"   ? Precision::double_only
+                  : precision_text == "single" ? Precision::single
+                                               : Precision::automatic;
+      single_precision_tolerance = prm.get_double("Single precision tolerance");
+      if (precision == Precision::single && type != "MUMPS")
+        throw InputError("Linear solver/Factorisation precision = single "
+                         "needs Linear solver/Type = MUMPS (given: "
+                         + type + "); allowed with " + type
+                         + " is double or auto");
       amg.relative_tolerance = prm.get_double("AMG tolerance");
       amg.max_iterations     = prm.get_integer("AMG iterations");
       amg.coarse_size        = prm.get_integer("AMG coarse size");
@@ -176,8 +209,9 @@ namespace deepdraw
 
 
     void
-    LinearSolver::reset_reduction()
+    LinearSolver::reset_reduction(const bool continues_stage)
     {
+      single_precision_allowed = continues_stage;
       for (BorderedFactorization *data :
            {implementation.get(), condensed_implementation.get()})
       {
@@ -353,6 +387,17 @@ namespace deepdraw
           && data.has_kept_inverse(matrix.m())
           && solve_with_kept_factors(data, matrix, rhs, solution))
         return;
+      if (single_precision_allowed
+          && parameters.single_precision(type, matrix.m())
+          && solve_in_single_precision(data,
+                                       type,
+                                       matrix,
+                                       rhs,
+                                       solution,
+                                       bordered,
+                                       decoupled))
+        return;
+      data.precision = FactorPrecision::double_precision;
       try
       {
         data.factorize_and_solve(type,
@@ -463,16 +508,73 @@ namespace deepdraw
                                           const Vector<double>       &rhs,
                                           Vector<double>             &solution)
     {
+      solution.reinit(matrix.m());
+      if (!gmres_with_factors(data, matrix, rhs, solution, forcing_term))
+        return false;
+      ++solve_statistics.reused_solves;
+      return true;
+    }
+
+
+    bool
+    LinearSolver::solve_in_single_precision(
+      BorderedFactorization                      &data,
+      const std::string                          &type,
+      const SparseMatrix<double>                 &matrix,
+      const Vector<double>                       &rhs,
+      Vector<double>                             &solution,
+      const std::vector<types::global_dof_index> &bordered,
+      const std::vector<types::global_dof_index> &decoupled)
+    {
+      data.precision = FactorPrecision::single_precision;
+      try
+      {
+        data.factorize_and_solve(type,
+                                 matrix,
+                                 rhs,
+                                 solution,
+                                 bordered,
+                                 decoupled);
+      }
+      catch (const MumpsMemoryError &)
+      {
+        throw; // not the matrix (D177)
+      }
+      catch (const std::exception &)
+      {
+        // Singular in single precision: the double factorisation decides.
+        ++solve_statistics.single_precision_fallbacks;
+        return false;
+      }
+      ++solve_statistics.single_precision_factorizations;
+      // The single-precision solve is GMRES' start.
+      if (gmres_with_factors(data,
+                             matrix,
+                             rhs,
+                             solution,
+                             parameters.single_precision_tolerance))
+        return true;
+      ++solve_statistics.single_precision_fallbacks;
+      return false;
+    }
+
+
+    bool
+    LinearSolver::gmres_with_factors(BorderedFactorization      &data,
+                                     const SparseMatrix<double> &matrix,
+                                     const Vector<double>       &rhs,
+                                     Vector<double>             &solution,
+                                     const double relative_target)
+    {
       // Right preconditioning: GMRES minimises the true residual |b - A x|,
       // which is also checked afterwards (D185).
-      const double                target = forcing_term * rhs.l2_norm();
+      const double                target = relative_target * rhs.l2_norm();
       ReuseControl                control(parameters.reuse_iterations, target);
       SolverGMRES<Vector<double>> gmres(
         control,
         SolverGMRES<Vector<double>>::AdditionalData(parameters.reuse_iterations
                                                       + 2,
                                                     true));
-      solution.reinit(matrix.m());
       const OwnedRowsOperator operator_A{matrix, data.owned_rows};
       bool                    converged = true;
       try
@@ -492,10 +594,7 @@ namespace deepdraw
       if (!converged)
         return false;
       Vector<double> residual(matrix.m());
-      if (!(operator_A.residual(residual, solution, rhs) <= 1.01 * target))
-        return false;
-      ++solve_statistics.reused_solves;
-      return true;
+      return operator_A.residual(residual, solution, rhs) <= 1.01 * target;
     }
 
 

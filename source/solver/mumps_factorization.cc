@@ -5,6 +5,7 @@
 #include <mpi.h>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 namespace deepdraw
 {
@@ -53,43 +54,68 @@ namespace deepdraw
     } // namespace
 
 
+    namespace
+    {
+      void
+      call(DMUMPS_STRUC_C &instance)
+      {
+        dmumps_c(&instance);
+      }
+
+      void
+      call(SMUMPS_STRUC_C &instance)
+      {
+        smumps_c(&instance);
+      }
+    } // namespace
+
+
     MumpsFactorization::MumpsFactorization(const bool scale)
+        : scale(scale)
     {
       int initialized = 0;
       MPI_Initialized(&initialized);
       if (!initialized)
         throw std::runtime_error("MUMPS needs MPI to be initialised");
-      data = DMUMPS_STRUC_C();
       // Under mpirun MUMPS factorises across all the ranks (D199).
-      distributed       = parallel::n_ranks() > 1;
-      data.comm_fortran = static_cast<MUMPS_INT>(
+      distributed = parallel::n_ranks() > 1;
+      data        = DMUMPS_STRUC_C();
+      configure(data, scale);
+    }
+
+
+    template <typename Instance>
+    void
+    MumpsFactorization::configure(Instance &instance, const bool scale)
+    {
+      instance.comm_fortran = static_cast<MUMPS_INT>(
         MPI_Comm_c2f(distributed ? MPI_COMM_WORLD : MPI_COMM_SELF));
-      data.par = 1; // the host works
-      data.sym = 0; // unsymmetric (contact rows, D90)
-      data.job = -1;
-      dmumps_c(&data);
+      instance.par = 1; // the host works
+      instance.sym = 0; // unsymmetric (contact rows, D90)
+      instance.job = -1;
+      call(instance);
       // Silent: no messages, statistics or warnings on the terminal.
-      data.icntl[index(1)] = -1;
-      data.icntl[index(2)] = -1;
-      data.icntl[index(3)] = -1;
-      data.icntl[index(4)] = 0;
+      instance.icntl[index(1)] = -1;
+      instance.icntl[index(2)] = -1;
+      instance.icntl[index(3)] = -1;
+      instance.icntl[index(4)] = 0;
       // Working space beyond the analysis' estimate, in percent: delayed
       // pivots of the whole (uncondensed) system's multiplier rows need
       // more than the default 20 (D64 used 400 through Amesos).
-      data.icntl[index(14)] = 100;
+      instance.icntl[index(14)] = 100;
       // No column permutation from the values (MC64): the analysis then
       // depends on the pattern alone, and LinearSolver keeps it from one
       // increment to the next without changing the arithmetic (D97).
-      data.icntl[index(6)] = 0;
+      instance.icntl[index(6)] = 0;
       // No row and column scaling where the caller knows the matrix to be
       // well scaled (the condensed displacement system): MUMPS' iterative
       // scaling is otherwise recomputed in every factorisation (D98).
       if (!scale)
-        data.icntl[index(8)] = 0;
+        instance.icntl[index(8)] = 0;
       // Each rank gives the rows it owns (distributed assembled input,
       // D214). The right-hand sides and solutions stay on the host.
       if (distributed)
-        data.icntl[index(18)] = 3;
+        instance.icntl[index(18)] = 3;
     }
 
 
@@ -102,38 +128,43 @@ namespace deepdraw
         return;
       data.job = -2;
       dmumps_c(&data);
+      if (single_data != nullptr)
+      {
+        single_data->job = -2;
+        smumps_c(single_data.get());
+      }
     }
 
 
+    template <typename Instance>
     void
-    MumpsFactorization::run(const int job)
+    MumpsFactorization::run(Instance &instance, const int job)
     {
       for (unsigned int attempt = 0;; ++attempt)
       {
-        data.job = job;
-        dmumps_c(&data);
-        const int status = data.infog[index(1)];
+        instance.job = job;
+        call(instance);
+        const int status = instance.infog[index(1)];
         if (status >= 0)
           return;
         if ((status == -8 || status == -9) && attempt < 3)
         {
-          data.icntl[index(14)] *= 2;
+          instance.icntl[index(14)] *= 2;
           continue;
         }
-        const int         detail = data.infog[index(2)];
+        const int         detail = instance.infog[index(2)];
         const std::string memory = memory_failure(status, detail);
         if (!memory.empty())
           throw MumpsMemoryError(
             "the linear solver MUMPS ran out of memory in job "
             + std::to_string(job) + " (INFOG(1) = " + std::to_string(status)
             + ", INFOG(2) = " + std::to_string(detail) + ": " + memory
-            + ", with ICNTL(14) = " + std::to_string(data.icntl[index(14)])
+            + ", with ICNTL(14) = " + std::to_string(instance.icntl[index(14)])
             + " % extra workspace); a smaller increment would not help: use "
               "a coarser mesh or a machine with more memory");
         throw std::runtime_error(
-          "MUMPS failed in job " + std::to_string(job)
-          + " (INFOG(1) = " + std::to_string(status)
-          + ", INFOG(2) = " + std::to_string(data.infog[index(2)])
+          "MUMPS failed in job " + std::to_string(job) + " (INFOG(1) = "
+          + std::to_string(status) + ", INFOG(2) = " + std::to_string(detail)
           + (status == -10 ? ": the matrix is numerically singular" : "")
           + ")");
       }
@@ -142,34 +173,128 @@ namespace deepdraw
 
     void
     MumpsFactorization::factorize(const SparseMatrix<double> &matrix,
-                                  const std::vector<bool>    &owned)
+                                  const std::vector<bool>    &owned,
+                                  const FactorPrecision       precision)
     {
       const SparsityPattern &pattern = matrix.get_sparsity_pattern();
-      bool new_pattern = !analysed || !analysed_pattern.matches(pattern);
+      bool new_pattern = !has_pattern || !analysed_pattern.matches(pattern);
       // The analysis is collective: the ranks agree on a new one.
       if (distributed)
         new_pattern = parallel::maximum(new_pattern ? 1 : 0) == 1;
       if (new_pattern)
         set_up_pattern(pattern, owned);
+      last_precision = precision;
+      hold_one_precision(precision);
+      give_values(matrix);
+      if (precision == FactorPrecision::double_precision)
+      {
+        if (!analysed)
+          analyse(data);
+        analysed = true;
+        run(data, 2);
+        double_factors_held = true;
+        return;
+      }
+      if (!single_analysed)
+        analyse(*single_data);
+      single_analysed = true;
+      run(*single_data, 2);
+    }
+
+
+    // The two precisions' factors are never held together: the other
+    // precision's instance, with its factors and analysis, is released
+    // (MUMPS 5.5 cannot free factors alone). A switch costs an analysis; it
+    // happens at a stage's first increment and where a refinement fails (D226).
+    void
+    MumpsFactorization::hold_one_precision(const FactorPrecision precision)
+    {
+      if (precision == FactorPrecision::double_precision)
+      {
+        if (single_data != nullptr)
+        {
+          single_data->job = -2;
+          smumps_c(single_data.get());
+          single_data.reset();
+        }
+        single_analysed = false;
+        return;
+      }
+      if (double_factors_held)
+      {
+        data.job = -2;
+        dmumps_c(&data);
+        data = DMUMPS_STRUC_C();
+        configure(data, scale);
+        give_pattern(data);
+        analysed            = false;
+        double_factors_held = false;
+      }
+      if (single_data == nullptr)
+      {
+        single_data  = std::make_unique<SMUMPS_STRUC_C>();
+        *single_data = SMUMPS_STRUC_C();
+        configure(*single_data, scale);
+        give_pattern(*single_data);
+        single_analysed = false;
+      }
+    }
+
+
+    template <typename Instance>
+    void
+    MumpsFactorization::give_pattern(Instance &instance) const
+    {
+      instance.n = analysed_pattern_rows;
+      if (distributed)
+      {
+        instance.nnz_loc = row_index.size();
+        instance.irn_loc = const_cast<int *>(row_index.data());
+        instance.jcn_loc = const_cast<int *>(column_index.data());
+      }
+      else
+      {
+        instance.nnz = row_index.size();
+        instance.irn = const_cast<int *>(row_index.data());
+        instance.jcn = const_cast<int *>(column_index.data());
+      }
+    }
+
+
+    void
+    MumpsFactorization::give_values(const SparseMatrix<double> &matrix)
+    {
       // On one rank the values in storage order are the coordinate entries
       // of set_up_pattern: MUMPS reads them in place, during job 2 only.
       // The first stored entry is (0, 0): a square pattern stores the
       // diagonal first (checked in set_up_pattern). Under mpirun the owned
-      // rows' values are copied out.
-      double *values = pattern.n_nonzero_elements() == 0
-                         ? nullptr
-                         : const_cast<double *>(&matrix(0, 0));
+      // rows' values are copied out, and single precision takes a copy
+      // rounded to float.
+      const SparsityPattern &pattern = matrix.get_sparsity_pattern();
+      double                *values  = pattern.n_nonzero_elements() == 0
+                                         ? nullptr
+                                         : const_cast<double *>(&matrix(0, 0));
       if (distributed)
       {
         for (std::size_t k = 0; k < local_positions.size(); ++k)
           local_values[k] = values[local_positions[k]];
-        data.a_loc = local_values.empty() ? nullptr : local_values.data();
+        values = local_values.empty() ? nullptr : local_values.data();
       }
+      else if (row_index.empty())
+        values = nullptr;
+      if (last_precision == FactorPrecision::double_precision)
+      {
+        (distributed ? data.a_loc : data.a) = values;
+        return;
+      }
+      const std::size_t n_values
+        = distributed ? local_values.size() : row_index.size();
+      single_values.assign(values, values + n_values);
+      float *single = single_values.empty() ? nullptr : single_values.data();
+      if (distributed)
+        single_data->a_loc = single;
       else
-        data.a = row_index.empty() ? nullptr : values;
-      if (!analysed)
-        analyse();
-      run(2);
+        single_data->a = single;
     }
 
 
@@ -189,17 +314,18 @@ namespace deepdraw
     // pord_smallest_system unknowns: on tiny graphs it ends the process
     // ("no valid number of stages in multisector", a one-cell sheet), and
     // AMD serves them as well (D186).
+    template <typename Instance>
     void
-    MumpsFactorization::analyse()
+    MumpsFactorization::analyse(Instance &instance)
     {
       candidates.clear();
       for (const int ordering : {0, 4})
       {
-        if (ordering == 4 && data.n < pord_smallest_system)
+        if (ordering == 4 && instance.n < pord_smallest_system)
           continue;
-        data.icntl[index(7)] = ordering;
-        run(1);
-        candidates.push_back({ordering, data.rinfog[index(1)]});
+        instance.icntl[index(7)] = ordering;
+        run(instance, 1);
+        candidates.push_back({ordering, instance.rinfog[index(1)]});
       }
       const auto best
         = std::min_element(candidates.begin(),
@@ -209,10 +335,9 @@ namespace deepdraw
                            { return a.estimated_flops < b.estimated_flops; });
       if (best->ordering != candidates.back().ordering)
       {
-        data.icntl[index(7)] = best->ordering;
-        run(1);
+        instance.icntl[index(7)] = best->ordering;
+        run(instance, 1);
       }
-      analysed = true;
       ++symbolic_analyses;
     }
 
@@ -220,7 +345,16 @@ namespace deepdraw
     int
     MumpsFactorization::ordering() const
     {
-      return data.infog[index(7)];
+      return last_precision == FactorPrecision::double_precision
+               ? data.infog[index(7)]
+               : single_data->infog[index(7)];
+    }
+
+
+    FactorPrecision
+    MumpsFactorization::precision() const
+    {
+      return last_precision;
     }
 
 
@@ -234,9 +368,12 @@ namespace deepdraw
     void
     MumpsFactorization::solve(std::vector<Vector<double>> &rhs_and_solutions)
     {
-      const std::size_t n = analysed ? static_cast<std::size_t>(data.n) : 0;
+      const bool factorised
+        = last_precision == FactorPrecision::double_precision ? analysed
+                                                              : single_analysed;
+      const std::size_t n = factorised ? static_cast<std::size_t>(data.n) : 0;
       for (const Vector<double> &column : rhs_and_solutions)
-        if (!analysed || column.size() != n)
+        if (!factorised || column.size() != n)
           throw std::runtime_error(
             "MUMPS: solve() needs a factorisation of a matrix of the "
             "right-hand side's size");
@@ -245,10 +382,19 @@ namespace deepdraw
         std::copy(rhs_and_solutions[c].begin(),
                   rhs_and_solutions[c].end(),
                   right_hand_sides.begin() + c * n);
-      data.rhs  = right_hand_sides.data();
-      data.nrhs = rhs_and_solutions.size();
-      data.lrhs = n;
-      run(3);
+      if (last_precision == FactorPrecision::double_precision)
+        solve_columns(data, rhs_and_solutions.size());
+      else
+      {
+        // Rounded to float and back: the solve is an approximate inverse
+        // either way (D226).
+        single_right_hand_sides.assign(right_hand_sides.begin(),
+                                       right_hand_sides.end());
+        solve_columns(*single_data, rhs_and_solutions.size());
+        std::copy(single_right_hand_sides.begin(),
+                  single_right_hand_sides.end(),
+                  right_hand_sides.begin());
+      }
       // The solution is on the host.
       if (distributed)
         parallel::broadcast(right_hand_sides.data(),
@@ -257,6 +403,21 @@ namespace deepdraw
         std::copy(right_hand_sides.begin() + c * n,
                   right_hand_sides.begin() + (c + 1) * n,
                   rhs_and_solutions[c].begin());
+    }
+
+
+    template <typename Instance>
+    void
+    MumpsFactorization::solve_columns(Instance         &instance,
+                                      const std::size_t n_columns)
+    {
+      if constexpr (std::is_same_v<Instance, DMUMPS_STRUC_C>)
+        instance.rhs = right_hand_sides.data();
+      else
+        instance.rhs = single_right_hand_sides.data();
+      instance.nrhs = n_columns;
+      instance.lrhs = data.n;
+      run(instance, 3);
     }
 
 
@@ -273,7 +434,9 @@ namespace deepdraw
     void
     MumpsFactorization::forget_analysis()
     {
-      analysed = false;
+      has_pattern     = false;
+      analysed        = false;
+      single_analysed = false;
     }
 
 
@@ -287,14 +450,18 @@ namespace deepdraw
     double
     MumpsFactorization::factorization_flops() const
     {
-      return data.rinfog[index(3)];
+      return last_precision == FactorPrecision::double_precision
+               ? data.rinfog[index(3)]
+               : single_data->rinfog[index(3)];
     }
 
 
     double
     MumpsFactorization::factor_entries() const
     {
-      const int entries = data.infog[index(29)];
+      const int entries = last_precision == FactorPrecision::double_precision
+                            ? data.infog[index(29)]
+                            : single_data->infog[index(29)];
       // Negative: millions of entries (MUMPS' convention for large counts).
       return entries >= 0 ? entries : -1e6 * entries;
     }
@@ -334,20 +501,13 @@ namespace deepdraw
             column_index.push_back(entry->column() + 1);
           }
       local_values.resize(local_positions.size());
-      data.n = n_rows;
-      if (distributed)
-      {
-        data.nnz_loc = row_index.size();
-        data.irn_loc = row_index.data();
-        data.jcn_loc = column_index.data();
-      }
-      else
-      {
-        data.nnz = row_index.size();
-        data.irn = row_index.data();
-        data.jcn = column_index.data();
-      }
-      analysed = false;
+      analysed_pattern_rows = n_rows;
+      give_pattern(data);
+      if (single_data != nullptr)
+        give_pattern(*single_data);
+      has_pattern     = true;
+      analysed        = false;
+      single_analysed = false;
     }
   } // namespace solver
 } // namespace deepdraw

@@ -115,6 +115,7 @@ namespace
        {"Linear solver/Smallest forcing term", ""},
        {"Linear solver/Reuse iterations", ""},
        {"Linear solver/Reuse threshold", ""},
+       {"Linear solver/Single precision tolerance", ""},
        {"Linear solver/AMG tolerance", ""},
        {"Linear solver/AMG iterations", ""},
        {"Linear solver/AMG coarse size", ""},

@@ -15,7 +15,17 @@
 // - a singular matrix is reported with MUMPS' status, not solved;
 // - LinearSolver with `Type = MUMPS` and the holder bordered equals the
 //   dense solution to 1e-14, with one analysis for three increments
-//   (reset_reduction() between them keeps MUMPS' analysis, D97).
+//   (reset_reduction() between them keeps MUMPS' analysis, D97);
+// - single-precision factors (D226) solve to float accuracy only: between
+//   1e-10 and 1e-5 off the dense solution (float's 6e-8 times the
+//   condition of this small system; double is 2-4e-16), while the same
+//   object's double factorisation is exact again; only one precision's
+//   instance is held (the other released with its factors, so a switch
+//   analyses anew), and its analysis is kept while the precision stays;
+// - LinearSolver with `Factorisation precision = single` refines the
+//   single-precision solve by GMRES to its tolerance (1e-10 here, so that
+//   GMRES must iterate), counts the factorisation, and factorises a
+//   stage's first increment (reset_reduction(false)) in double, exactly.
 #include "contact_like_pattern.h"
 #include "test_utilities.h"
 
@@ -261,5 +271,63 @@ main(int argc, char *argv[])
               solver.statistics().symbolic_analyses,
               1,
               0);
+
+  // Single-precision factors (D226).
+  {
+    using deepdraw::solver::FactorPrecision;
+    fill(A, 1);
+    const Vector<double>                 exact = dense_solution(A, b);
+    deepdraw::solver::MumpsFactorization two_precisions;
+    Vector<double>                       x;
+    two_precisions.factorize(A, {}, FactorPrecision::single_precision);
+    two_precisions.solve(b, x);
+    const double single_error = relative_difference(x, exact);
+    std::cout << "  single precision: " << single_error << std::endl;
+    check_true("single precision: float accuracy, not double's",
+               single_error > 1e-10 && single_error < 1e-5
+                 && two_precisions.precision()
+                      == FactorPrecision::single_precision);
+    two_precisions.factorize(A);
+    two_precisions.solve(b, x);
+    check_close("double after single: exact again",
+                relative_difference(x, exact),
+                0.,
+                1e-14);
+    two_precisions.factorize(A, {}, FactorPrecision::single_precision);
+    two_precisions.factorize(A, {}, FactorPrecision::single_precision);
+    check_close("an analysis per switch of precision, kept while it stays",
+                two_precisions.n_symbolic_analyses(),
+                3,
+                0);
+
+    parameters.precision
+      = deepdraw::solver::LinearSolverParameters::Precision::single;
+    parameters.single_precision_tolerance = 1e-10;
+    deepdraw::solver::LinearSolver refined(parameters);
+    refined.reset_reduction(true);
+    refined.solve(A, b, x, {2 * n});
+    const auto counts = refined.statistics();
+    std::cout << "  refined: " << relative_difference(x, exact) << " after "
+              << counts.gmres_iterations << " GMRES iterations" << std::endl;
+    check_true("single precision refined: counted, GMRES iterated",
+               counts.single_precision_factorizations == 1
+                 && counts.single_precision_fallbacks == 0
+                 && counts.gmres_iterations > 0);
+    // |x - x*| <= cond |b - A x| / |b|: 1e-10 with room for the condition.
+    check_close("single precision refined to its tolerance",
+                relative_difference(x, exact),
+                0.,
+                1e-8);
+    refined.reset_reduction(false);
+    refined.solve(A, b, x, {2 * n});
+    check_close("a stage's first increment: double, exact",
+                relative_difference(x, exact),
+                0.,
+                1e-14);
+    check_close("a stage's first increment: no single factorisation",
+                refined.statistics().single_precision_factorizations,
+                1,
+                0);
+  }
   return summary();
 }

@@ -71,9 +71,11 @@ namespace deepdraw
             const std::vector<types::global_dof_index> &decoupled)
         = 0;
 
-      // The next solve starts afresh (solver::LinearSolver::reset_reduction).
+      // The next solve starts afresh (solver::LinearSolver::reset_reduction;
+      // `continues_stage`: the increment follows a converged one of the
+      // same stage).
       virtual void
-      reset_reduction()
+      reset_reduction(bool continues_stage)
         = 0;
 
       virtual solver::LinearSolver::Statistics

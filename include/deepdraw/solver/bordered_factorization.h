@@ -69,7 +69,9 @@ namespace deepdraw
       std::vector<bool> owned_rows;
       // MUMPS scales rows and columns (the whole system, whose multiplier
       // rows are scaled unlike the displacements); not the condensed one.
-      bool                 scale_matrix = true;
+      bool scale_matrix = true;
+      // The arithmetic of the next MUMPS factorisation (D226).
+      FactorPrecision      precision = FactorPrecision::double_precision;
       UmfpackFactorization umfpack;
       // Made on first use: MUMPS needs MPI, which not every caller has.
       std::unique_ptr<MumpsFactorization>   mumps;

@@ -49,6 +49,20 @@ namespace deepdraw
       double       forcing_term          = 0.1;
       double       smallest_forcing_term = 0.1;
       unsigned int reuse_iterations      = 10;
+      // MUMPS' factors in single precision, each solve refined by GMRES in
+      // double: a fresh factorisation's to `single_precision_tolerance`, a
+      // kept one's to the forcing term; a system the refinement does not
+      // solve is factorised again in double. Never in the first increment
+      // of a stage. `automatic`: where `Reuse factorisation = auto` reuses
+      // them, on systems of at least `reuse_threshold` unknowns (D226).
+      enum class Precision
+      {
+        double_only,
+        single,
+        automatic
+      };
+      Precision precision                  = Precision::automatic;
+      double    single_precision_tolerance = 1e-3;
       // Type AMG: the condensed system by GMRES with smoothed aggregation
       // (D193); the systems that cannot be condensed, and those GMRES does
       // not solve, by MUMPS.
@@ -68,6 +82,18 @@ namespace deepdraw
         return !iterative()
                && (reuse == Reuse::always
                    || (reuse == Reuse::automatic && n >= reuse_threshold));
+      }
+
+      // Whether a system of n unknowns that `type` factorises is
+      // factorised in single precision (outside a stage's first increment).
+      bool
+      single_precision(const std::string &type, const std::size_t n) const
+      {
+        return type == "MUMPS"
+               && (precision == Precision::single
+                   || (precision == Precision::automatic
+                       && reuse == Reuse::automatic && !iterative()
+                       && n >= reuse_threshold));
       }
 
       static void
@@ -133,8 +159,11 @@ namespace deepdraw
       // Called at the start of each increment, so that the systems of an
       // increment, and with them its results, depend only on the state it
       // starts from (a resumed run repeats the same arithmetic, D55, D64).
+      // `continues_stage`: the increment follows a converged one of the
+      // same stage, so that single-precision factors may serve it (the
+      // first increment of a stage factorises in double, D226).
       void
-      reset_reduction();
+      reset_reduction(bool continues_stage = false);
 
       // Type AMG: the point and component of each displacement unknown in
       // the current configuration, for the rigid-body modes.
@@ -157,6 +186,10 @@ namespace deepdraw
         // Solves by GMRES with kept factors, and its iterations (D185).
         unsigned int reused_solves    = 0;
         unsigned int gmres_iterations = 0;
+        // Factorisations in single precision, and the systems their
+        // refinement did not solve, factorised again in double (D226).
+        unsigned int single_precision_factorizations = 0;
+        unsigned int single_precision_fallbacks      = 0;
         // Type AMG: hierarchies built, condensed systems solved by GMRES,
         // and condensed systems solved by MUMPS instead (D193).
         unsigned int amg_hierarchies = 0;
@@ -182,6 +215,27 @@ namespace deepdraw
                               const SparseMatrix<double> &matrix,
                               const Vector<double>       &rhs,
                               Vector<double>             &solution);
+      // Factorises in single precision and refines the solve to the
+      // single precision tolerance; false if that fails (the caller
+      // factorises in double).
+      bool
+      solve_in_single_precision(
+        BorderedFactorization                      &data,
+        const std::string                          &type,
+        const SparseMatrix<double>                 &matrix,
+        const Vector<double>                       &rhs,
+        Vector<double>                             &solution,
+        const std::vector<types::global_dof_index> &bordered,
+        const std::vector<types::global_dof_index> &decoupled);
+      // GMRES right preconditioned with data's last factors, from
+      // `solution` as it is, to |b - A x| <= relative_target |b| in at most
+      // Reuse iterations; false if it did not get there.
+      bool
+      gmres_with_factors(BorderedFactorization      &data,
+                         const SparseMatrix<double> &matrix,
+                         const Vector<double>       &rhs,
+                         Vector<double>             &solution,
+                         double                      relative_target);
       void
       update_forcing_term(double residual_norm);
       // The condensed system by AMG, or by MUMPS where GMRES fails; true
@@ -204,6 +258,8 @@ namespace deepdraw
       // Eisenstat-Walker: this solve's forcing term and the last |F|.
       double forcing_term           = 0.;
       double previous_residual_norm = 0.;
+      // Whether this increment may factorise in single precision.
+      bool single_precision_allowed = false;
     };
   } // namespace solver
 } // namespace deepdraw

@@ -2,7 +2,9 @@
 // analysis (ordering and symbolic factorisation) is kept while the sparsity
 // pattern stays the same and only the numeric factorisation is redone when
 // the values change. Through Amesos every factorisation analysed afresh,
-// which made MUMPS slower than UMFPACK (D64).
+// which made MUMPS slower than UMFPACK (D64). The factors can be single
+// precision (SMUMPS): faster, and half the memory, but the solves are then
+// only an approximate inverse, which LinearSolver refines (D226).
 #ifndef deepdraw_solver_mumps_factorization_h
 #define deepdraw_solver_mumps_factorization_h
 
@@ -10,6 +12,8 @@
 #include <deal.II/lac/vector.h>
 #include <deepdraw/solver/pattern_snapshot.h>
 #include <dmumps_c.h>
+#include <memory>
+#include <smumps_c.h>
 #include <stdexcept>
 #include <vector>
 
@@ -27,6 +31,13 @@ namespace deepdraw
     {
     public:
       using std::runtime_error::runtime_error;
+    };
+
+    // The arithmetic of MUMPS' factors (DMUMPS or SMUMPS).
+    enum class FactorPrecision
+    {
+      double_precision,
+      single_precision
     };
 
     class MumpsFactorization
@@ -49,9 +60,14 @@ namespace deepdraw
       // INFOG(1), INFOG(2)) if the matrix is singular, MumpsMemoryError if
       // memory or workspace ran out. Under mpirun each rank gives the rows
       // `owned` marks (the matrix split by rows, D214); one rank gives all.
+      // Each precision keeps an analysis of its own.
       void
       factorize(const SparseMatrix<double> &matrix,
-                const std::vector<bool>    &owned = {});
+                const std::vector<bool>    &owned = {},
+                FactorPrecision precision = FactorPrecision::double_precision);
+      // The precision of the last factorisation, which solve() uses.
+      FactorPrecision
+      precision() const;
       // Solves with the last factorisation for the columns of `rhs` (one
       // pass through the factors for all of them).
       void
@@ -86,23 +102,54 @@ namespace deepdraw
       void
       set_up_pattern(const SparsityPattern   &pattern,
                      const std::vector<bool> &owned);
-      // Analyses the pattern with each ordering; keeps the cheapest.
+      // The settings of the constructor, for a new instance.
+      template <typename Instance>
       void
-      analyse();
+      configure(Instance &instance, bool scale);
+      // The values of `matrix` in the instance's own arithmetic.
+      void
+      give_values(const SparseMatrix<double> &matrix);
+      // The coordinates of set_up_pattern to an instance.
+      template <typename Instance>
+      void
+      give_pattern(Instance &instance) const;
+      // Releases the other precision's instance; creates this one's.
+      void
+      hold_one_precision(FactorPrecision precision);
+      // Analyses the pattern with each ordering; keeps the cheapest.
+      template <typename Instance>
+      void
+      analyse(Instance &instance);
       // Runs MUMPS with `job`; on a workspace shortage (INFOG(1) = -8, -9)
       // it doubles ICNTL(14) and repeats, up to three times.
+      template <typename Instance>
       void
-      run(int job);
+      run(Instance &instance, int job);
+      template <typename Instance>
+      void
+      solve_columns(Instance &instance, std::size_t n_columns);
 
       DMUMPS_STRUC_C data;
+      // Created at the first single-precision factorisation; it shares
+      // the pattern arrays of `data`.
+      std::unique_ptr<SMUMPS_STRUC_C> single_data;
+      FactorPrecision    last_precision = FactorPrecision::double_precision;
+      bool               scale          = true;
+      std::vector<float> single_values;
+      std::vector<float> single_right_hand_sides;
       // Under mpirun (D199): MPI_COMM_WORLD, each rank giving the entries
       // of the rows it owns, found at local_positions of the values (D214).
       bool                     distributed = false;
       std::vector<std::size_t> local_positions;
       std::vector<double>      local_values;
       PatternSnapshot          analysed_pattern;
-      bool                     analysed          = false;
-      unsigned int             symbolic_analyses = 0;
+      bool                     has_pattern           = false;
+      std::size_t              analysed_pattern_rows = 0;
+      bool                     double_factors_held   = false;
+      // Whether each precision's instance has analysed the pattern.
+      bool                analysed          = false;
+      bool                single_analysed   = false;
+      unsigned int        symbolic_analyses = 0;
       std::vector<int>    row_index, column_index; // 1-based, as MUMPS wants
       std::vector<double> right_hand_sides;
       std::vector<OrderingCandidate> candidates;
