@@ -92,8 +92,8 @@ namespace deepdraw
         return type == "MUMPS"
                && (precision == Precision::single
                    || (precision == Precision::automatic
-                       && reuse == Reuse::automatic && !iterative()
-                       && n >= reuse_threshold));
+                       && reuse == Reuse::automatic
+                       && reuses_factorization(n)));
       }
 
       static void
