@@ -11,6 +11,7 @@ import pathlib
 import shutil
 import subprocess
 import sys
+import time
 
 
 def start(description, extra_arguments=()):
@@ -174,6 +175,22 @@ def run_and_resume(deepdraw, work, resumed_at):
         failures.append("the resumed run did not begin at load %s"
                         % resumed_at)
     return failures + same_tables(work / "full", work / "resumed")
+
+
+def stop_after(process, output, increments, signal_number):
+    """Sends the signal to `process` once output/statistics.csv has
+    `increments` rows (exits FAILED if the run ends first or takes over two
+    minutes); returns its exit code, stdout and stderr."""
+    statistics = pathlib.Path(output) / "statistics.csv"
+    deadline = time.time() + 120
+    while not statistics.exists() or \
+            len(statistics.read_text().splitlines()) - 1 < increments:
+        if process.poll() is not None or time.time() > deadline:
+            sys.exit("FAILED: the run ended before increment %d" % increments)
+        time.sleep(0.002)
+    process.send_signal(signal_number)
+    out, err = process.communicate(timeout=120)
+    return process.returncode, out, err
 
 
 def same_tables(expected, actual, what="the uninterrupted run"):

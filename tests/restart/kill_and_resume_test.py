@@ -18,7 +18,6 @@ import pathlib
 import signal
 import subprocess
 import sys
-import time
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
 import script_test  # noqa: E402  (tests/script_test.py)
@@ -31,26 +30,6 @@ def start(deepdraw, work, output, *extra):
                              str(output), *extra], cwd=work,
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                             text=True)
-
-
-def rows(path):
-    try:
-        with open(path) as f:
-            return sum(1 for _ in f) - 1
-    except FileNotFoundError:
-        return -1
-
-
-def stop_after(process, output, increments, signal_number):
-    """Sends the signal once statistics.csv has `increments` rows."""
-    deadline = time.time() + 120
-    while rows(output / "statistics.csv") < increments:
-        if process.poll() is not None or time.time() > deadline:
-            sys.exit(f"FAILED: the run ended before increment {increments}")
-        time.sleep(0.002)
-    process.send_signal(signal_number)
-    out, err = process.communicate(timeout=120)
-    return process.returncode, out, err
 
 
 def run_to_end(deepdraw, work, output, *extra):
@@ -112,9 +91,9 @@ def main():
     # each resumed from the last checkpoint.
     killed = work / "killed"
     process = start(args.deepdraw, work, killed)
-    stop_after(process, killed, 3, signal.SIGKILL)
+    script_test.stop_after(process, killed, 3, signal.SIGKILL)
     process = start(args.deepdraw, work, killed, "--resume")
-    stop_after(process, killed, 9, signal.SIGKILL)
+    script_test.stop_after(process, killed, 9, signal.SIGKILL)
     out = run_to_end(args.deepdraw, work, killed, "--resume")
     if "resumed at load" not in out:
         failures.append("the resumed run does not say where it resumed")
@@ -123,7 +102,7 @@ def main():
     # SIGTERM: a checkpoint, a message, exit code 3; then resumed.
     stopped = work / "stopped"
     process = start(args.deepdraw, work, stopped)
-    code, out, err = stop_after(process, stopped, 5, signal.SIGTERM)
+    code, out, err = script_test.stop_after(process, stopped, 5, signal.SIGTERM)
     print(err.strip())
     if code != 3:
         failures.append(f"SIGTERM gave exit code {code}, not 3")

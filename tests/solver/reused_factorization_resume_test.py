@@ -17,16 +17,15 @@ import pathlib
 import signal
 import subprocess
 import sys
-import time
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
 import script_test  # noqa: E402
 from script_test import run  # noqa: E402
 
 
-CASES = (("reused", "Reuse factorisation = true",
+CASES = (("reused", ("Reuse factorisation", "true"),
           "solves with a kept factorisation"),
-         ("single", "Factorisation precision = single",
+         ("single", ("Factorisation precision", "single"),
           "factorisations in single precision"))
 
 
@@ -41,16 +40,7 @@ def stop_and_resume(args, work, name, summary):
                                 "--output-directory", stopped], cwd=work,
                                stdout=subprocess.PIPE,
                                stderr=subprocess.PIPE, text=True)
-    statistics = work / stopped / "statistics.csv"
-    deadline = time.time() + 120
-    while (not statistics.exists()
-           or len(statistics.read_text().splitlines()) < 11):
-        if process.poll() is not None or time.time() > deadline:
-            sys.exit("FAILED: the %s run ended before its tenth increment"
-                     % name)
-        time.sleep(0.002)
-    process.send_signal(signal.SIGTERM)
-    process.communicate(timeout=120)
+    script_test.stop_after(process, work / stopped, 10, signal.SIGTERM)
     if process.returncode != 3:
         failures.append("%s: SIGTERM gave exit code %d, not 3"
                         % (name, process.returncode))
@@ -69,10 +59,10 @@ def main():
     args, source, work = script_test.start(__doc__)
     failures = []
     for name, setting, summary in CASES:
-        (work / (name + ".prm")).write_text(
-            "include %s\nsubsection Linear solver\n  set %s\nend\n"
-            % (source / "tests" / "regression" / "square_cup_short.prm",
-               setting))
+        script_test.write_linear_solver_case(
+            work, name + ".prm",
+            source / "tests" / "regression" / "square_cup_short.prm",
+            [setting])
         failures += stop_and_resume(args, work, name, summary)
     script_test.finish(failures)
 
