@@ -21,6 +21,7 @@ from adaptivity_test_tools import prepare, read
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1]
                        / "restart"))
 import kill_and_resume_test as restart  # noqa: E402
+import script_test  # noqa: E402  (tests/script_test.py, via restart)
 
 ADAPTIVE = """include {base}
 subsection Adaptivity
@@ -44,7 +45,7 @@ def main():
 
     reference = work / "uninterrupted"
     restart.run_to_end(args.deepdraw, work, reference)
-    cycles = restart.rows(reference / "adaptivity.csv")
+    cycles = len(read(reference / "adaptivity.csv"))
     print(f"uninterrupted run: {cycles} refinements")
     if cycles != 2:
         failures.append(f"{cycles} refinements, expected 2 (after 8 and 12)")
@@ -55,9 +56,9 @@ def main():
 
     killed = work / "killed"
     process = restart.start(args.deepdraw, work, killed)
-    restart.stop_after(process, killed, 9, signal.SIGKILL)
+    script_test.stop_after(process, killed, 9, signal.SIGKILL)
     process = restart.start(args.deepdraw, work, killed, "--resume")
-    restart.stop_after(process, killed, 13, signal.SIGKILL)
+    script_test.stop_after(process, killed, 13, signal.SIGKILL)
     out = restart.run_to_end(args.deepdraw, work, killed, "--resume")
     if "resumed at load" not in out:
         failures.append("the resumed run does not say where it resumed")
