@@ -193,6 +193,7 @@ namespace
        {"Newton/Force tolerance", "1", "Force tolerance"},
        {"Newton/Minimum iterations", "41", "Minimum iterations"},
        {"Contact/Friction coefficient", "10.5", "Friction coefficient"},
+       {"Linear solver/Reuse iterations", "automatic", "Reuse iterations"},
        {"Geometry/Elements along x", "2147483648", "Elements along x"},
        {"Geometry/Elements along x", "1.5", "Elements along x"},
        {"Geometry/Length", "75 mm", "Length"},

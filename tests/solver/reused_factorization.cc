@@ -14,7 +14,8 @@
 //   matrix changed by 20 %) falls back to a factorisation, whose solution
 //   is exact again;
 // - after reset_reduction() (an increment's start) the first solve
-//   factorises without trying GMRES.
+//   factorises without trying GMRES;
+// - the GMRES budget of `Reuse iterations = auto` (D228).
 #include "contact_like_pattern.h"
 #include "test_utilities.h"
 
@@ -54,6 +55,35 @@ namespace
   {
     Vector<double> r(b.size());
     return A.residual(r, x, b) / b.l2_norm();
+  }
+
+  // Reuse iterations = auto (D228): max(10, 10 (n / 23 409)^0.4), worked
+  // out by hand for the square cup's sheets (3 nodes through the
+  // thickness, 3 unknowns a node): 50 x 50 x 2 has 23 409 unknowns,
+  // 100 x 100 x 2 91 809 (17.27), 150 x 150 x 2 205 209 (23.83),
+  // 300 x 300 x 2 815 409 (41.38). A number given is kept at every size.
+  void
+  check_budget_rule()
+  {
+    deepdraw::solver::LinearSolverParameters                automatic;
+    const std::vector<std::pair<std::size_t, unsigned int>> expected
+      = {{6, 10},
+         {6084, 10},
+         {23409, 10},
+         {91809, 17},
+         {205209, 24},
+         {815409, 41}};
+    for (const auto &[n, budget] : expected)
+      check_close("auto budget at " + std::to_string(n) + " unknowns",
+                  automatic.gmres_budget(n),
+                  budget,
+                  0);
+    deepdraw::solver::LinearSolverParameters given;
+    given.reuse_iterations = 10;
+    check_close("given budget at 815 409 unknowns",
+                given.gmres_budget(815409),
+                10,
+                0);
   }
 } // namespace
 
@@ -142,5 +172,6 @@ main(int argc, char *argv[])
                 0.,
                 1e-12);
   }
+  check_budget_rule();
   return summary();
 }

@@ -48,7 +48,10 @@ namespace deepdraw
       unsigned int reuse_threshold       = 20000;
       double       forcing_term          = 0.1;
       double       smallest_forcing_term = 0.1;
-      unsigned int reuse_iterations      = 10;
+      // GMRES iterations with kept factors before a system is factorised
+      // afresh; `automatic_reuse_iterations`: gmres_budget() (D228).
+      static constexpr unsigned int automatic_reuse_iterations = 0;
+      unsigned int reuse_iterations = automatic_reuse_iterations;
       // MUMPS' factors in single precision, each solve refined by GMRES in
       // double: a fresh factorisation's to `single_precision_tolerance`, a
       // kept one's to the forcing term; a system the refinement does not
@@ -95,6 +98,13 @@ namespace deepdraw
                        && reuse == Reuse::automatic
                        && reuses_factorization(n)));
       }
+
+      // The GMRES iterations allowed with kept factors on a system of n
+      // unknowns: `reuse_iterations`, or where automatic
+      // max(10, 10 (n / 23 409)^0.4), the measured break-even growing with
+      // the cost of a factorisation against an iteration (D227, D228).
+      unsigned int
+      gmres_budget(std::size_t n) const;
 
       static void
       declare_parameters(ParameterHandler &prm);
