@@ -35,9 +35,10 @@ namespace deepdraw
       // Within an increment, later Newton systems are solved by GMRES with
       // the increment's last factorisation as right preconditioner, to the
       // Eisenstat-Walker forcing term (between `smallest_forcing_term` and
-      // `forcing_term`); a system that needs more than `reuse_iterations`
-      // is factorised (D185). `automatic`: only for systems of at least
-      // `reuse_threshold` unknowns, where it was measured to pay (D206).
+      // `forcing_term`); a system that needs more than gmres_budget()
+      // iterations is factorised (D185, D228). `automatic`: only for
+      // systems of at least `reuse_threshold` unknowns, where it was
+      // measured to pay (D206).
       enum class Reuse
       {
         never,
