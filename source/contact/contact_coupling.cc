@@ -1,8 +1,8 @@
 // ContactCoupling, part 2: the contact pairs (one per sheet surface node and
 // tool), their sparsity, assembly and commit, the equation of each
-// force-controlled tool, the convergence measures and the output
-// aggregates (doc/theory_contact.md); the tool slots are in
-// contact_coupling_tools.cc.
+// force-controlled tool and the convergence measures (doc/theory_contact.md);
+// the tool slots are in contact_coupling_tools.cc, what the pairs report for
+// the output in contact_coupling_reports.cc.
 #include <algorithm>
 #include <cmath>
 #include <deal.II/base/parallel.h>
@@ -544,40 +544,6 @@ namespace deepdraw
     }
 
 
-    std::vector<ContactCoupling::NodalContact>
-    ContactCoupling::nodal_contact(const unsigned int n_vertices) const
-    {
-      std::vector<NodalContact> nodal(n_vertices);
-      for (const Pair &pair : pairs)
-      {
-        NodalContact      &node = nodal[pair.vertex];
-        const unsigned int status
-          = pair.result.state == contact::ContactState::open
-              ? 0
-              : (pair.result.state == contact::ContactState::stick ? 1 : 2);
-        node.status = std::max(node.status, status);
-        node.normal_force += pair.result.normal_force;
-        node.friction_force += pair.result.friction_force;
-        if (pair.found)
-          node.gap = std::min(node.gap, pair.result.normal_gap);
-      }
-      for (NodalContact &node : nodal)
-        if (node.gap == std::numeric_limits<double>::max())
-          node.gap = search_distance;
-      return nodal;
-    }
-
-
-    std::vector<Tensor<1, 3>>
-    ContactCoupling::tool_forces() const
-    {
-      std::vector<Tensor<1, 3>> forces(definitions.size());
-      for (const Pair &pair : pairs)
-        forces[pair.tool] += pair.result.force;
-      return forces;
-    }
-
-
     const std::vector<geometry::RigidTool> &
     ContactCoupling::tools() const
     {
@@ -621,55 +587,6 @@ namespace deepdraw
         if (dof != numbers::invalid_dof_index)
           unknowns.push_back(dof);
       return unknowns;
-    }
-
-
-    unsigned int
-    ContactCoupling::n_stick() const
-    {
-      return std::count_if(pairs.begin(),
-                           pairs.end(),
-                           [](const Pair &pair) {
-                             return pair.result.state
-                                    == contact::ContactState::stick;
-                           });
-    }
-
-
-    unsigned int
-    ContactCoupling::n_slip() const
-    {
-      return std::count_if(pairs.begin(),
-                           pairs.end(),
-                           [](const Pair &pair) {
-                             return pair.result.state
-                                    == contact::ContactState::slip;
-                           });
-    }
-
-
-    unsigned int
-    ContactCoupling::n_initial_penetrations(
-      const std::vector<Point<3>> &positions) const
-    {
-      unsigned int count = 0;
-      for (const Pair &pair : pairs)
-      {
-        geometry::ProjectionResult projection;
-        if (tool_list[pair.tool].project(positions[pair.vertex],
-                                         projection,
-                                         search_distance)
-            && !projection.on_free_edge && projection.gap < 0.)
-          ++count;
-      }
-      return count;
-    }
-
-
-    double
-    ContactCoupling::contact_time() const
-    {
-      return total_contact_time;
     }
   } // namespace contact
 } // namespace deepdraw

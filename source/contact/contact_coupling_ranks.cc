@@ -1,4 +1,4 @@
-// ContactCoupling, part 5: the contact pairs under mpirun (D216). Each rank
+// ContactCoupling, part 7: the contact pairs under mpirun (D216). Each rank
 // evaluates the pairs of the nodes whose rows it owns; every rank then
 // receives the others' outcomes, so that it adds every pair to its rows as
 // one rank does. Most pairs are open (on 100 x 100 x 2 at 8 mm about 2 000
